@@ -1,0 +1,533 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import primitives.Double3;
+import primitives.Ray;
+
+/**
+ * A scene's geometry compiled into flat arrays for the hot loop, searched with a {@link BVH} or, when the BVH is
+ * switched off, by a linear scan over the very same arrays (brute force).
+ *
+ * <p>Compilation flattens nested {@link Geometries}, splits polygons into fan triangles and meshes into their
+ * triangles (skipping those of zero area), and gathers every triangle's nine coordinates into one array in BVH
+ * leaf order. Other bounded geometry (spheres, cylinders, user types) is called through {@link Intersectable};
+ * unbounded geometry (planes, tubes) is tested beside the tree. Edges that lone triangles and polygons share
+ * exactly are marked watertight.
+ *
+ * <p>Equal-distance hits are resolved toward the primitive added first, whatever the visiting order, so the BVH
+ * and the brute-force scan return the same primitive and the same distance bit for bit.
+ */
+public final class Accelerator implements Intersectable {
+    /** Default number of SAH bins per node. */
+    public static final int DEFAULT_BINS = 16;
+    /** Default maximum primitives per leaf. */
+    public static final int DEFAULT_MAX_LEAF_SIZE = 4;
+
+    /** Slack on primitive boxes so rounding in the kernels never reports a hit just outside a box. */
+    private static final double BOX_PAD = 1e-14;
+
+    private final int boundedCount;
+    /** Per bounded primitive in search order: 9 coordinates if it is a triangle. */
+    private final double[] triangles;
+
+    private final int[] sharedEdges;
+    /** The geometry owning each triangle and the part index within it. */
+    private final Geometry[] owners;
+
+    private final int[] parts;
+    /** Non-triangle bounded primitives (null where the primitive is a triangle). */
+    private final Intersectable[] objects;
+    /** Original (insertion) index of each primitive: the deterministic tie-break. */
+    private final int[] ids;
+    /** Whether a primitive may let light through (then shadow rays must look past it). */
+    private final boolean[] mayTransmit;
+
+    private final Intersectable[] unbounded;
+    private final boolean[] unboundedMayTransmit;
+    private final BVH bvh;
+    private final double buildSeconds;
+
+    private Accelerator(Collector c, boolean useBvh, int bins, int maxLeafSize) {
+        long start = System.nanoTime();
+        c.markSharedOutlineEdges();
+        int n = c.count;
+        boundedCount = n;
+        bvh = useBvh && n > 0 ? BVH.build(c.boxes(), bins, maxLeafSize) : null;
+        triangles = new double[9 * n];
+        sharedEdges = new int[n];
+        owners = new Geometry[n];
+        parts = new int[n];
+        objects = new Intersectable[n];
+        ids = new int[n];
+        mayTransmit = new boolean[n];
+        for (int k = 0; k < n; k++) {
+            int i = bvh == null ? k : bvh.order[k];
+            ids[k] = i;
+            objects[k] = c.objects.get(i);
+            mayTransmit[k] = c.mayTransmit.get(i);
+            if (objects[k] == null) {
+                System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
+                sharedEdges[k] = c.shared[i];
+                owners[k] = c.owners.get(i);
+                parts[k] = c.parts[i];
+            }
+        }
+        unbounded = c.unbounded.toArray(new Intersectable[0]);
+        unboundedMayTransmit = new boolean[unbounded.length];
+        for (int j = 0; j < unbounded.length; j++) {
+            unboundedMayTransmit[j] = mayTransmit(unbounded[j]);
+        }
+        buildSeconds = (System.nanoTime() - start) * 1e-9;
+    }
+
+    /** Compiles {@code geometry} with a BVH of default settings, or for brute-force search. */
+    public static Accelerator build(Intersectable geometry, boolean useBvh) {
+        return build(geometry, useBvh, DEFAULT_BINS, DEFAULT_MAX_LEAF_SIZE);
+    }
+
+    /** Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build. */
+    public static Accelerator build(Intersectable geometry, boolean useBvh, int bins, int maxLeafSize) {
+        primitives.Util.requireNonNull(geometry, "geometry");
+        Collector c = new Collector();
+        c.collect(geometry);
+        return new Accelerator(c, useBvh, bins, maxLeafSize);
+    }
+
+    /** The BVH, or null in brute-force mode or for a scene without bounded geometry. */
+    public BVH getBvh() {
+        return bvh;
+    }
+
+    /** Bounded primitives (triangles and other bounded shapes) in the search structure. */
+    public int boundedPrimitiveCount() {
+        return boundedCount;
+    }
+
+    /** Primitives tested beside the tree. */
+    public int unboundedPrimitiveCount() {
+        return unbounded.length;
+    }
+
+    /** Wall time of compilation including the BVH build, in seconds. */
+    public double buildSeconds() {
+        return buildSeconds;
+    }
+
+    /** Bytes of the flat primitive arrays plus the BVH. */
+    public long bytes() {
+        long b = 8L * triangles.length
+                + 4L * (sharedEdges.length + parts.length + ids.length)
+                + 8L * (owners.length + objects.length)
+                + mayTransmit.length;
+        return b + (bvh == null ? 0 : bvh.bytes());
+    }
+
+    @Override
+    public BoundingBox getBoundingBox() {
+        if (unbounded.length > 0 || boundedCount == 0) return null;
+        if (bvh != null) return bvh.node(0).bounds();
+        throw new UnsupportedOperationException("bounds of a brute-force accelerator are not tracked");
+    }
+
+    // ---------------------------------------------------------------- closest hit
+
+    @Override
+    public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
+        int best = Integer.MAX_VALUE;
+        double tieLimit = tMax;
+        long tests = 0;
+        for (int j = 0; j < unbounded.length; j++) {
+            tests++;
+            if (unbounded[j].intersect(ray, tMin, tMax, hit)) {
+                tMax = hit.t;
+                tieLimit = Math.nextUp(tMax);
+                best = boundedCount + j;
+            }
+        }
+        if (bvh == null) {
+            for (int k = 0; k < boundedCount; k++) {
+                tests++;
+                if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                    tMax = hit.t;
+                    tieLimit = Math.nextUp(tMax);
+                    best = ids[k];
+                }
+            }
+        } else if (boundedCount > 0) {
+            final double[] nb = bvh.nodeBounds;
+            final int[] nd = bvh.nodeData;
+            final int[] stack = hit.stack;
+            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            int sp = 0;
+            int node = 0;
+            long visits = 0;
+            while (true) {
+                visits++;
+                if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
+                    int info = nd[2 * node + 1];
+                    if (info > 0) {
+                        int first = nd[2 * node];
+                        for (int k = first, end = first + info; k < end; k++) {
+                            tests++;
+                            if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                                tMax = hit.t;
+                                tieLimit = Math.nextUp(tMax);
+                                best = ids[k];
+                            }
+                        }
+                        if (sp == 0) break;
+                        node = stack[--sp];
+                    } else {
+                        int axis = -1 - info;
+                        boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
+                        // Visit the nearer child first: with a negative direction that is the second child.
+                        if (negative) {
+                            stack[sp++] = node + 1;
+                            node = nd[2 * node];
+                        } else {
+                            stack[sp++] = nd[2 * node];
+                            node = node + 1;
+                        }
+                    }
+                } else {
+                    if (sp == 0) break;
+                    node = stack[--sp];
+                }
+            }
+            hit.nodeVisits += visits;
+        }
+        hit.primitiveTests += tests;
+        if (best == Integer.MAX_VALUE) return false;
+        hit.primitiveIndex = best;
+        return true;
+    }
+
+    /** Tests bounded primitive {@code k}; on a hit fills the record's geometry and part as well. */
+    private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
+        Intersectable object = objects[k];
+        if (object != null) return object.intersect(ray, tMin, tMax, hit);
+        int o = 9 * k;
+        if (WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, hit)) {
+            hit.geometry = owners[k];
+            hit.part = parts[k];
+            return true;
+        }
+        return false;
+    }
+
+    /** The slab test against node bounds, conservative on both ends (see {@link BoundingBox}). */
+    private static boolean hitsNode(double[] nb, int b, Ray ray, double tMin, double tMax) {
+        double t0 = (nb[b] - ray.ox) * ray.invDx;
+        double t1 = (nb[b + 3] - ray.ox) * ray.invDx;
+        double near = t0 < t1 ? t0 : t1;
+        double far = t0 < t1 ? t1 : t0;
+        if (near > tMin) tMin = near * NEAR_SCALE;
+        far *= BoundingBox.FAR_SCALE;
+        if (far < tMax) tMax = far;
+        if (tMin > tMax) return false;
+        t0 = (nb[b + 1] - ray.oy) * ray.invDy;
+        t1 = (nb[b + 4] - ray.oy) * ray.invDy;
+        near = t0 < t1 ? t0 : t1;
+        far = t0 < t1 ? t1 : t0;
+        if (near > tMin) tMin = near * NEAR_SCALE;
+        far *= BoundingBox.FAR_SCALE;
+        if (far < tMax) tMax = far;
+        if (tMin > tMax) return false;
+        t0 = (nb[b + 2] - ray.oz) * ray.invDz;
+        t1 = (nb[b + 5] - ray.oz) * ray.invDz;
+        near = t0 < t1 ? t0 : t1;
+        far = t0 < t1 ? t1 : t0;
+        if (near > tMin) tMin = near * NEAR_SCALE;
+        far *= BoundingBox.FAR_SCALE;
+        if (far < tMax) tMax = far;
+        return tMin <= tMax;
+    }
+
+    /** Pulls the near slab distance toward the origin as the far one is pushed away. */
+    private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
+
+    // ---------------------------------------------------------------- shadows
+
+    @Override
+    public boolean occludes(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        return anyHit(ray, tMin, tMax, scratch, false);
+    }
+
+    /**
+     * The fraction of light that passes along the ray through {@code (tMin, tMax)}: {@link Double3#ONE} when
+     * nothing is in the way, {@link Double3#ZERO} when an opaque surface is, otherwise the product of the
+     * transparency kT of every surface crossed. Stops at the first opaque occluder. The factors are multiplied
+     * in primitive order so the result does not depend on the visiting order.
+     */
+    public Double3 transmittance(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        scratch.transparentCount = 0;
+        if (anyHit(ray, tMin, tMax, scratch, true)) return Double3.ZERO;
+        int count = scratch.transparentCount;
+        if (count == 0) return Double3.ONE;
+        scratch.sortTransparentHits();
+        double r = 1, g = 1, b = 1;
+        for (int i = 0; i < count; i++) {
+            Double3 kT = scratch.transparentKt[i];
+            r *= kT.d1;
+            g *= kT.d2;
+            b *= kT.d3;
+        }
+        return new Double3(r, g, b);
+    }
+
+    /**
+     * Any-hit search; returns true at the first blocking hit. With {@code honourTransparency}, hits on transparent
+     * surfaces do not block but are collected in the scratch record.
+     */
+    private boolean anyHit(Ray ray, double tMin, double tMax, HitRecord scratch, boolean honourTransparency) {
+        long tests = 0;
+        try {
+            for (int j = 0; j < unbounded.length; j++) {
+                tests++;
+                boolean pass = honourTransparency && unboundedMayTransmit[j];
+                if (blocks(unbounded[j], boundedCount + j, pass, ray, tMin, tMax, scratch)) return true;
+            }
+            if (bvh == null) {
+                for (int k = 0; k < boundedCount; k++) {
+                    tests++;
+                    if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) return true;
+                }
+                return false;
+            }
+            if (boundedCount == 0) return false;
+            final double[] nb = bvh.nodeBounds;
+            final int[] nd = bvh.nodeData;
+            final int[] stack = scratch.stack;
+            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            int sp = 0;
+            int node = 0;
+            long visits = 0;
+            try {
+                while (true) {
+                    visits++;
+                    if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
+                        int info = nd[2 * node + 1];
+                        if (info > 0) {
+                            int first = nd[2 * node];
+                            for (int k = first, end = first + info; k < end; k++) {
+                                tests++;
+                                if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                                    return true;
+                                }
+                            }
+                            if (sp == 0) return false;
+                            node = stack[--sp];
+                        } else {
+                            int axis = -1 - info;
+                            boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
+                            if (negative) {
+                                stack[sp++] = node + 1;
+                                node = nd[2 * node];
+                            } else {
+                                stack[sp++] = nd[2 * node];
+                                node = node + 1;
+                            }
+                        }
+                    } else {
+                        if (sp == 0) return false;
+                        node = stack[--sp];
+                    }
+                }
+            } finally {
+                scratch.nodeVisits += visits;
+            }
+        } finally {
+            scratch.primitiveTests += tests;
+        }
+    }
+
+    /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */
+    private boolean blocks(int k, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        Intersectable object = objects[k];
+        if (object != null) return blocks(object, ids[k], mayPass, ray, tMin, tMax, scratch);
+        int o = 9 * k;
+        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, scratch)) {
+            return false;
+        }
+        if (!mayPass) return true;
+        Double3 kT = owners[k].getMaterial().getKt();
+        if (kT.isZero()) return true;
+        scratch.addTransparentHit(ids[k], kT);
+        return false;
+    }
+
+    private static boolean blocks(
+            Intersectable object, int id, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        if (!mayPass) return object.occludes(ray, tMin, tMax, scratch);
+        // Every crossing of a transparent surface attenuates: walk all hits of this primitive in the segment.
+        double from = tMin;
+        while (object.intersect(ray, from, tMax, scratch)) {
+            Double3 kT = scratch.geometry.getMaterial().getKt();
+            if (kT.isZero()) return true;
+            scratch.addTransparentHit(id, kT);
+            from = scratch.t;
+        }
+        return false;
+    }
+
+    private static boolean mayTransmit(Intersectable g) {
+        // Non-Geometry members (user composites) may contain transparent surfaces: decide per hit.
+        return !(g instanceof Geometry geometry) || geometry.getMaterial().isTransparent();
+    }
+
+    // ---------------------------------------------------------------- compilation
+
+    /** Gathers primitives from a geometry tree. */
+    private static final class Collector {
+        int count;
+        double[] triangles = new double[9 * 64];
+        int[] shared = new int[64];
+        int[] parts = new int[64];
+        final List<Geometry> owners = new ArrayList<>();
+        final List<Intersectable> objects = new ArrayList<>();
+        final List<Boolean> mayTransmit = new ArrayList<>();
+        final List<BoundingBox> objectBoxes = new ArrayList<>();
+        final List<Intersectable> unbounded = new ArrayList<>();
+        /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
+        final Map<EdgeKey, List<int[]>> outlineEdges = new HashMap<>();
+
+        void collect(Intersectable g) {
+            if (g instanceof Geometries composite) {
+                for (Intersectable member : composite.getMembers()) collect(member);
+            } else if (g instanceof Polygon polygon) {
+                collectPolygon(polygon);
+            } else if (g instanceof Mesh mesh) {
+                collectMesh(mesh);
+            } else if (g.getBoundingBox() == null) {
+                unbounded.add(g);
+            } else {
+                addObject(g);
+            }
+        }
+
+        private void collectPolygon(Polygon polygon) {
+            int fans = polygon.fanCount();
+            boolean transmit = polygon.getMaterial().isTransparent();
+            for (int i = 0; i < fans; i++) {
+                int k = addTriangle(
+                        polygon.fan, 9 * i, 9 * i + 3, 9 * i + 6, polygon, i, polygon.fanSharedEdges[i], transmit);
+                double[] f = polygon.fan;
+                int o = 9 * i;
+                outline(k, WatertightTriangle.EDGE_12, f, o + 3, o + 6);
+                if (i == 0) outline(k, WatertightTriangle.EDGE_01, f, o, o + 3);
+                if (i == fans - 1) outline(k, WatertightTriangle.EDGE_20, f, o + 6, o);
+            }
+        }
+
+        private void collectMesh(Mesh mesh) {
+            boolean transmit = mesh.getMaterial().isTransparent();
+            int[] idx = mesh.indices;
+            for (int i = 0; i < mesh.triangleCount(); i++) {
+                if (mesh.isDegenerate(i)) continue; // never hit; keeps zero-area boxes out of the tree
+                addTriangle(
+                        mesh.vertices,
+                        3 * idx[3 * i],
+                        3 * idx[3 * i + 1],
+                        3 * idx[3 * i + 2],
+                        mesh,
+                        i,
+                        WatertightTriangle.ALL_EDGES_SHARED,
+                        transmit);
+            }
+        }
+
+        private int addTriangle(
+                double[] v, int a, int b, int c, Geometry owner, int part, int sharedFlags, boolean transmit) {
+            if (count == shared.length) {
+                int capacity = 2 * count;
+                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
+                shared = java.util.Arrays.copyOf(shared, capacity);
+                parts = java.util.Arrays.copyOf(parts, capacity);
+            }
+            int o = 9 * count;
+            System.arraycopy(v, a, triangles, o, 3);
+            System.arraycopy(v, b, triangles, o + 3, 3);
+            System.arraycopy(v, c, triangles, o + 6, 3);
+            shared[count] = sharedFlags;
+            parts[count] = part;
+            owners.add(owner);
+            objects.add(null);
+            objectBoxes.add(null);
+            mayTransmit.add(transmit);
+            return count++;
+        }
+
+        private void addObject(Intersectable g) {
+            if (count == shared.length) {
+                int capacity = 2 * count;
+                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
+                shared = java.util.Arrays.copyOf(shared, capacity);
+                parts = java.util.Arrays.copyOf(parts, capacity);
+            }
+            owners.add(null);
+            objects.add(g);
+            objectBoxes.add(g.getBoundingBox());
+            mayTransmit.add(mayTransmit(g));
+            count++;
+        }
+
+        private void outline(int primitive, int edgeFlag, double[] v, int from, int to) {
+            EdgeKey key = EdgeKey.of(v, from, to);
+            outlineEdges.computeIfAbsent(key, e -> new ArrayList<>(2)).add(new int[] {primitive, edgeFlag});
+        }
+
+        /** Outline edges used by two or more triangles or polygons become shared (watertight) edges. */
+        void markSharedOutlineEdges() {
+            for (List<int[]> users : outlineEdges.values()) {
+                if (users.size() < 2) continue;
+                for (int[] use : users) shared[use[0]] |= use[1];
+            }
+        }
+
+        /** Six doubles per primitive, padded slightly outward. */
+        double[] boxes() {
+            double[] boxes = new double[6 * count];
+            for (int k = 0; k < count; k++) {
+                int b = 6 * k;
+                BoundingBox box = objectBoxes.get(k);
+                if (box == null) {
+                    int o = 9 * k;
+                    for (int a = 0; a < 3; a++) {
+                        double lo = Math.min(triangles[o + a], Math.min(triangles[o + 3 + a], triangles[o + 6 + a]));
+                        double hi = Math.max(triangles[o + a], Math.max(triangles[o + 3 + a], triangles[o + 6 + a]));
+                        boxes[b + a] = lo;
+                        boxes[b + 3 + a] = hi;
+                    }
+                } else {
+                    boxes[b] = box.minX;
+                    boxes[b + 1] = box.minY;
+                    boxes[b + 2] = box.minZ;
+                    boxes[b + 3] = box.maxX;
+                    boxes[b + 4] = box.maxY;
+                    boxes[b + 5] = box.maxZ;
+                }
+                for (int a = 0; a < 3; a++) {
+                    double lo = boxes[b + a], hi = boxes[b + 3 + a];
+                    double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + Double.MIN_NORMAL;
+                    boxes[b + a] = lo - pad;
+                    boxes[b + 3 + a] = hi + pad;
+                }
+            }
+            return boxes;
+        }
+    }
+
+    /** An undirected edge between two exact points, for finding shared outline edges. */
+    private record EdgeKey(double ax, double ay, double az, double bx, double by, double bz) {
+        static EdgeKey of(double[] v, int from, int to) {
+            // + 0.0 turns -0.0 into 0.0 so the same point always gives the same key.
+            double ax = v[from] + 0.0, ay = v[from + 1] + 0.0, az = v[from + 2] + 0.0;
+            double bx = v[to] + 0.0, by = v[to + 1] + 0.0, bz = v[to + 2] + 0.0;
+            boolean swap = ax > bx || (ax == bx && (ay > by || (ay == by && az > bz)));
+            return swap ? new EdgeKey(bx, by, bz, ax, ay, az) : new EdgeKey(ax, ay, az, bx, by, bz);
+        }
+    }
+}

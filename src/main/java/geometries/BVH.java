@@ -1,0 +1,312 @@
+package geometries;
+
+import java.util.Arrays;
+
+/**
+ * A bounding volume hierarchy built top-down with a binned surface-area heuristic and flattened depth-first into
+ * primitive arrays: six doubles of bounds and two ints per node. Interior nodes store their second child and split
+ * axis (the first child follows the parent); leaves store a range of the primitive order.
+ *
+ * <p>Build: at each node the centroids are binned along the axis of largest centroid extent; the split between
+ * bins that minimises {@code 1/2 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper and
+ * small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The traversal lives in
+ * {@link Accelerator}, next to the primitive data it tests.
+ */
+public final class BVH {
+    /** Deepest node level; the traversal stack is sized from it. */
+    public static final int MAX_DEPTH = 64;
+    /** Cost of visiting a node relative to testing a primitive (pbrt-v4 uses the same). */
+    private static final double TRAVERSAL_COST = 0.5;
+
+    /** Bounds of node i at [6i, 6i+6): minX, minY, minZ, maxX, maxY, maxZ. */
+    final double[] nodeBounds;
+    /** Node i at [2i, 2i+2): leaf: first primitive, count; interior: second child, -(axis + 1). */
+    final int[] nodeData;
+    /** The primitives in leaf order: entry k is the original index of the k-th primitive. */
+    final int[] order;
+
+    private final int nodeCount;
+    private final int leafCount;
+    private final int maxDepth;
+
+    private BVH(Builder b) {
+        this.nodeCount = b.nodeCount;
+        this.nodeBounds = Arrays.copyOf(b.bounds, 6 * nodeCount);
+        this.nodeData = Arrays.copyOf(b.data, 2 * nodeCount);
+        this.order = b.index;
+        this.leafCount = b.leafCount;
+        this.maxDepth = b.maxDepthReached;
+    }
+
+    /**
+     * Builds a BVH over primitives given by their boxes.
+     *
+     * @param primitiveBounds six doubles per primitive: min x, y, z then max x, y, z
+     * @param bins number of SAH bins per node, 2..256
+     * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
+     */
+    public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
+        if (bins < 2 || bins > 256) {
+            throw new IllegalArgumentException("BVH bins must be in [2, 256], but was " + bins);
+        }
+        if (maxLeafSize < 1 || maxLeafSize > 64) {
+            throw new IllegalArgumentException("BVH maxLeafSize must be in [1, 64], but was " + maxLeafSize);
+        }
+        if (primitiveBounds.length % 6 != 0) {
+            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
+        }
+        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
+    }
+
+    public int nodeCount() {
+        return nodeCount;
+    }
+
+    public int leafCount() {
+        return leafCount;
+    }
+
+    /** Depth of the deepest leaf (the root is depth 0). */
+    public int depth() {
+        return maxDepth;
+    }
+
+    public int primitiveCount() {
+        return order.length;
+    }
+
+    /** Bytes held by the node and order arrays. */
+    public long bytes() {
+        return 8L * nodeBounds.length + 4L * nodeData.length + 4L * order.length;
+    }
+
+    /** Node {@code i} (0 is the root). */
+    public BVHNode node(int i) {
+        if (i < 0 || i >= nodeCount) {
+            throw new IllegalArgumentException("node index must be in [0, " + nodeCount + "), but was " + i);
+        }
+        int b = 6 * i;
+        BoundingBox box = new BoundingBox(
+                nodeBounds[b],
+                nodeBounds[b + 1],
+                nodeBounds[b + 2],
+                nodeBounds[b + 3],
+                nodeBounds[b + 4],
+                nodeBounds[b + 5]);
+        int info = nodeData[2 * i + 1];
+        return info > 0
+                ? new BVHNode(box, nodeData[2 * i], info, -1, -1)
+                : new BVHNode(box, -1, 0, nodeData[2 * i], -1 - info);
+    }
+
+    /** Original index of the primitive at position {@code k} of the leaf order. */
+    public int primitiveAt(int k) {
+        return order[k];
+    }
+
+    /** The recursive binned-SAH build, writing nodes depth-first into growable arrays. */
+    private static final class Builder {
+        private final double[] primBounds;
+        private final double[] centroids;
+        private final int[] index;
+        private final int bins;
+        private final int maxLeafSize;
+        private final int[] binCount;
+        private final double[] binBounds;
+        private final double[] rightArea;
+
+        double[] bounds;
+        int[] data;
+        int nodeCount;
+        int leafCount;
+        int maxDepthReached;
+
+        Builder(double[] primBounds, int bins, int maxLeafSize) {
+            this.primBounds = primBounds;
+            this.bins = bins;
+            this.maxLeafSize = maxLeafSize;
+            int n = primBounds.length / 6;
+            centroids = new double[3 * n];
+            index = new int[n];
+            for (int i = 0; i < n; i++) {
+                index[i] = i;
+                for (int a = 0; a < 3; a++) {
+                    centroids[3 * i + a] = 0.5 * (primBounds[6 * i + a] + primBounds[6 * i + 3 + a]);
+                }
+            }
+            binCount = new int[bins];
+            binBounds = new double[6 * bins];
+            rightArea = new double[bins];
+            int capacity = Math.max(1, 2 * n / Math.max(1, maxLeafSize) + 1);
+            bounds = new double[6 * capacity];
+            data = new int[2 * capacity];
+            if (n > 0) build(0, n, 0);
+        }
+
+        private int allocateNode() {
+            if (nodeCount == data.length / 2) {
+                bounds = Arrays.copyOf(bounds, bounds.length * 2);
+                data = Arrays.copyOf(data, data.length * 2);
+            }
+            return nodeCount++;
+        }
+
+        private void build(int start, int end, int depth) {
+            int node = allocateNode();
+            int count = end - start;
+            // Node bounds and centroid bounds in one pass.
+            double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0;
+            double bx1 = Double.NEGATIVE_INFINITY, by1 = bx1, bz1 = bx1;
+            double cx0 = Double.POSITIVE_INFINITY, cy0 = cx0, cz0 = cx0;
+            double cx1 = Double.NEGATIVE_INFINITY, cy1 = cx1, cz1 = cx1;
+            for (int k = start; k < end; k++) {
+                int p = index[k];
+                int o = 6 * p;
+                bx0 = Math.min(bx0, primBounds[o]);
+                by0 = Math.min(by0, primBounds[o + 1]);
+                bz0 = Math.min(bz0, primBounds[o + 2]);
+                bx1 = Math.max(bx1, primBounds[o + 3]);
+                by1 = Math.max(by1, primBounds[o + 4]);
+                bz1 = Math.max(bz1, primBounds[o + 5]);
+                double x = centroids[3 * p], y = centroids[3 * p + 1], z = centroids[3 * p + 2];
+                cx0 = Math.min(cx0, x);
+                cy0 = Math.min(cy0, y);
+                cz0 = Math.min(cz0, z);
+                cx1 = Math.max(cx1, x);
+                cy1 = Math.max(cy1, y);
+                cz1 = Math.max(cz1, z);
+            }
+            int b = 6 * node;
+            bounds[b] = bx0;
+            bounds[b + 1] = by0;
+            bounds[b + 2] = bz0;
+            bounds[b + 3] = bx1;
+            bounds[b + 4] = by1;
+            bounds[b + 5] = bz1;
+            maxDepthReached = Math.max(maxDepthReached, depth);
+
+            if (count == 1 || depth >= MAX_DEPTH) {
+                makeLeaf(node, start, count);
+                return;
+            }
+            double ex = cx1 - cx0, ey = cy1 - cy0, ez = cz1 - cz0;
+            int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+            double lo = axis == 0 ? cx0 : axis == 1 ? cy0 : cz0;
+            double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
+
+            int mid;
+            if (!(extent > 0)) {
+                // All centroids coincide: nothing separates them, so split by count to keep leaves small.
+                if (count <= maxLeafSize) {
+                    makeLeaf(node, start, count);
+                    return;
+                }
+                mid = start + count / 2;
+            } else {
+                mid = sahPartition(start, end, axis, lo, extent, surfaceArea(bx0, by0, bz0, bx1, by1, bz1), count);
+                if (mid < 0) {
+                    makeLeaf(node, start, count);
+                    return;
+                }
+            }
+            build(start, mid, depth + 1);
+            int second = nodeCount;
+            build(mid, end, depth + 1);
+            data[2 * node] = second;
+            data[2 * node + 1] = -1 - axis;
+        }
+
+        /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
+        private int sahPartition(int start, int end, int axis, double lo, double extent, double nodeArea, int count) {
+            Arrays.fill(binCount, 0);
+            for (int i = 0; i < bins; i++) {
+                int o = 6 * i;
+                binBounds[o] = binBounds[o + 1] = binBounds[o + 2] = Double.POSITIVE_INFINITY;
+                binBounds[o + 3] = binBounds[o + 4] = binBounds[o + 5] = Double.NEGATIVE_INFINITY;
+            }
+            double scale = bins / extent;
+            for (int k = start; k < end; k++) {
+                int p = index[k];
+                int bin = binOf(centroids[3 * p + axis], lo, scale);
+                binCount[bin]++;
+                int o = 6 * bin, q = 6 * p;
+                binBounds[o] = Math.min(binBounds[o], primBounds[q]);
+                binBounds[o + 1] = Math.min(binBounds[o + 1], primBounds[q + 1]);
+                binBounds[o + 2] = Math.min(binBounds[o + 2], primBounds[q + 2]);
+                binBounds[o + 3] = Math.max(binBounds[o + 3], primBounds[q + 3]);
+                binBounds[o + 4] = Math.max(binBounds[o + 4], primBounds[q + 4]);
+                binBounds[o + 5] = Math.max(binBounds[o + 5], primBounds[q + 5]);
+            }
+            // Sweep from the right: area of the union of bins [i, bins).
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+            double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            for (int i = bins - 1; i > 0; i--) {
+                int o = 6 * i;
+                x0 = Math.min(x0, binBounds[o]);
+                y0 = Math.min(y0, binBounds[o + 1]);
+                z0 = Math.min(z0, binBounds[o + 2]);
+                x1 = Math.max(x1, binBounds[o + 3]);
+                y1 = Math.max(y1, binBounds[o + 4]);
+                z1 = Math.max(z1, binBounds[o + 5]);
+                rightArea[i] = surfaceArea(x0, y0, z0, x1, y1, z1);
+            }
+            // Sweep from the left, pricing the split after bin i.
+            x0 = y0 = z0 = Double.POSITIVE_INFINITY;
+            x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
+            int leftCount = 0;
+            double bestCost = Double.POSITIVE_INFINITY;
+            int bestSplit = -1;
+            for (int i = 0; i < bins - 1; i++) {
+                int o = 6 * i;
+                x0 = Math.min(x0, binBounds[o]);
+                y0 = Math.min(y0, binBounds[o + 1]);
+                z0 = Math.min(z0, binBounds[o + 2]);
+                x1 = Math.max(x1, binBounds[o + 3]);
+                y1 = Math.max(y1, binBounds[o + 4]);
+                z1 = Math.max(z1, binBounds[o + 5]);
+                leftCount += binCount[i];
+                int rightCount = count - leftCount;
+                if (leftCount == 0 || rightCount == 0) continue;
+                double cost = leftCount * surfaceArea(x0, y0, z0, x1, y1, z1) + rightCount * rightArea[i + 1];
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestSplit = i;
+                }
+            }
+            double splitCost = TRAVERSAL_COST + (nodeArea > 0 ? bestCost / nodeArea : 0);
+            if (bestSplit < 0) {
+                return count <= maxLeafSize ? -1 : start + count / 2;
+            }
+            if (count <= maxLeafSize && splitCost >= count) return -1;
+            // Partition in place: bins [0, bestSplit] to the left.
+            int i = start, j = end - 1;
+            while (i <= j) {
+                if (binOf(centroids[3 * index[i] + axis], lo, scale) <= bestSplit) {
+                    i++;
+                } else {
+                    int s = index[i];
+                    index[i] = index[j];
+                    index[j] = s;
+                    j--;
+                }
+            }
+            return i;
+        }
+
+        private int binOf(double centroid, double lo, double scale) {
+            int bin = (int) ((centroid - lo) * scale);
+            return bin < 0 ? 0 : bin >= bins ? bins - 1 : bin;
+        }
+
+        private void makeLeaf(int node, int start, int count) {
+            data[2 * node] = start;
+            data[2 * node + 1] = count;
+            leafCount++;
+        }
+
+        private static double surfaceArea(double x0, double y0, double z0, double x1, double y1, double z1) {
+            double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;
+            return 2 * (ex * ey + ey * ez + ez * ex);
+        }
+    }
+}

@@ -1,0 +1,18 @@
+package geometries;
+
+/**
+ * A read-only view of one node of a flattened {@link BVH}: its bounds and either the primitives of a leaf or the
+ * split axis and children of an interior node. Nodes are stored depth-first, so an interior node's first child
+ * is the next node and only the second child's index is stored (pbrt's {@code LinearBVHNode}).
+ *
+ * @param bounds the box around everything below the node
+ * @param firstPrimitive first primitive of a leaf, in the BVH's primitive order (-1 for interior nodes)
+ * @param primitiveCount primitives in a leaf (0 for interior nodes)
+ * @param secondChild index of the second child of an interior node (-1 for leaves)
+ * @param axis split axis of an interior node, 0 = x, 1 = y, 2 = z (-1 for leaves)
+ */
+public record BVHNode(BoundingBox bounds, int firstPrimitive, int primitiveCount, int secondChild, int axis) {
+    public boolean isLeaf() {
+        return primitiveCount > 0;
+    }
+}

@@ -1,0 +1,168 @@
+package geometries;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+
+/**
+ * An immutable axis-aligned box: the bounds of geometry for the BVH.
+ *
+ * <p>The slab test is robust: a zero direction component gives infinite reciprocals, and the NaN of
+ * {@code 0 * infinity} (a ray exactly in a slab's plane) is discarded by comparison order instead of spreading;
+ * the far distance is enlarged by {@code 1 + 2 gamma(3)} so rounding never culls a box the ray really crosses
+ * (Ize 2013, pbrt).
+ */
+public final class BoundingBox {
+    /** Enlargement of the far slab distance that makes the slab test conservative. */
+    static final double FAR_SCALE = 1 + 2 * Util.gamma(3);
+
+    public final double minX, minY, minZ, maxX, maxY, maxZ;
+
+    public BoundingBox(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
+        if (!(minX <= maxX && minY <= maxY && minZ <= maxZ)) {
+            throw new IllegalArgumentException("bounding box min must not exceed max (and no NaN), but was (" + minX
+                    + ", " + minY + ", " + minZ + ") .. (" + maxX + ", " + maxY + ", " + maxZ + ")");
+        }
+        this.minX = minX;
+        this.minY = minY;
+        this.minZ = minZ;
+        this.maxX = maxX;
+        this.maxY = maxY;
+        this.maxZ = maxZ;
+    }
+
+    /** The smallest box holding both points. */
+    public static BoundingBox of(Point a, Point b) {
+        return new BoundingBox(
+                Math.min(a.x, b.x),
+                Math.min(a.y, b.y),
+                Math.min(a.z, b.z),
+                Math.max(a.x, b.x),
+                Math.max(a.y, b.y),
+                Math.max(a.z, b.z));
+    }
+
+    /** The smallest box holding all points. */
+    public static BoundingBox of(Point... points) {
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (Point p : points) {
+            x0 = Math.min(x0, p.x);
+            y0 = Math.min(y0, p.y);
+            z0 = Math.min(z0, p.z);
+            x1 = Math.max(x1, p.x);
+            y1 = Math.max(y1, p.y);
+            z1 = Math.max(z1, p.z);
+        }
+        return new BoundingBox(x0, y0, z0, x1, y1, z1);
+    }
+
+    /** The box around a centre, half extents {@code r}, rounded outward so it surely contains the shape. */
+    static BoundingBox around(double cx, double cy, double cz, double rx, double ry, double rz) {
+        return new BoundingBox(
+                Math.nextDown(cx - rx),
+                Math.nextDown(cy - ry),
+                Math.nextDown(cz - rz),
+                Math.nextUp(cx + rx),
+                Math.nextUp(cy + ry),
+                Math.nextUp(cz + rz));
+    }
+
+    public BoundingBox union(BoundingBox other) {
+        return new BoundingBox(
+                Math.min(minX, other.minX),
+                Math.min(minY, other.minY),
+                Math.min(minZ, other.minZ),
+                Math.max(maxX, other.maxX),
+                Math.max(maxY, other.maxY),
+                Math.max(maxZ, other.maxZ));
+    }
+
+    public double surfaceArea() {
+        double ex = maxX - minX, ey = maxY - minY, ez = maxZ - minZ;
+        return 2 * (ex * ey + ey * ez + ez * ex);
+    }
+
+    public Point center() {
+        return new Point((minX + maxX) * 0.5, (minY + maxY) * 0.5, (minZ + maxZ) * 0.5);
+    }
+
+    public Point getMin() {
+        return new Point(minX, minY, minZ);
+    }
+
+    public Point getMax() {
+        return new Point(maxX, maxY, maxZ);
+    }
+
+    public boolean contains(Point p) {
+        return p.x >= minX && p.x <= maxX && p.y >= minY && p.y <= maxY && p.z >= minZ && p.z <= maxZ;
+    }
+
+    /** Whether the ray crosses the box somewhere in {@code (tMin, tMax)}. */
+    public boolean intersects(Ray ray, double tMin, double tMax) {
+        return slabTest(minX, minY, minZ, maxX, maxY, maxZ, ray, tMin, tMax);
+    }
+
+    /** The robust slab test on raw bounds, shared with the flat BVH. */
+    static boolean slabTest(
+            double x0, double y0, double z0, double x1, double y1, double z1, Ray ray, double tMin, double tMax) {
+        double near = (x0 - ray.ox) * ray.invDx;
+        double far = (x1 - ray.ox) * ray.invDx;
+        if (ray.invDx < 0) {
+            double s = near;
+            near = far;
+            far = s;
+        }
+        far *= FAR_SCALE;
+        // "near > tMin" is false for NaN, so a NaN slab leaves the interval unchanged.
+        if (near > tMin) tMin = near;
+        if (far < tMax) tMax = far;
+        if (tMin > tMax) return false;
+
+        near = (y0 - ray.oy) * ray.invDy;
+        far = (y1 - ray.oy) * ray.invDy;
+        if (ray.invDy < 0) {
+            double s = near;
+            near = far;
+            far = s;
+        }
+        far *= FAR_SCALE;
+        if (near > tMin) tMin = near;
+        if (far < tMax) tMax = far;
+        if (tMin > tMax) return false;
+
+        near = (z0 - ray.oz) * ray.invDz;
+        far = (z1 - ray.oz) * ray.invDz;
+        if (ray.invDz < 0) {
+            double s = near;
+            near = far;
+            far = s;
+        }
+        far *= FAR_SCALE;
+        if (near > tMin) tMin = near;
+        if (far < tMax) tMax = far;
+        return tMin <= tMax;
+    }
+
+    @Override
+    public boolean equals(Object obj) {
+        return obj instanceof BoundingBox b
+                && minX == b.minX
+                && minY == b.minY
+                && minZ == b.minZ
+                && maxX == b.maxX
+                && maxY == b.maxY
+                && maxZ == b.maxZ;
+    }
+
+    @Override
+    public int hashCode() {
+        return java.util.Objects.hash(minX, minY, minZ, maxX, maxY, maxZ);
+    }
+
+    @Override
+    public String toString() {
+        return "BoundingBox[(" + minX + ", " + minY + ", " + minZ + ") .. (" + maxX + ", " + maxY + ", " + maxZ + ")]";
+    }
+}

@@ -1,0 +1,182 @@
+package geometries;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * An indexed triangle mesh: one shared vertex array and three vertex indices per triangle, optionally with
+ * per-vertex normals for smooth shading. In a compiled scene the BVH sees each triangle on its own.
+ *
+ * <p>All edges of a mesh are treated as shared (see {@link WatertightTriangle}): a ray through an edge or vertex
+ * hits exactly one of the triangles around it, so closed meshes do not leak. Validation rejects NaN or infinite
+ * coordinates and out-of-range or negative indices; triangles of zero area are kept (their indices are valid) but
+ * never hit and never enter the BVH.
+ */
+public class Mesh extends Geometry {
+    final double[] vertices;
+    final int[] indices;
+    private final double[] normals;
+
+    /**
+     * @param vertices x, y, z of each vertex
+     * @param indices three vertex indices per triangle
+     */
+    public Mesh(double[] vertices, int[] indices) {
+        this(vertices, indices, null);
+    }
+
+    /**
+     * @param normals x, y, z of a normal per vertex (need not be unit), or null for flat shading
+     */
+    public Mesh(double[] vertices, int[] indices, double[] normals) {
+        Util.requireNonNull(vertices, "mesh vertices");
+        Util.requireNonNull(indices, "mesh indices");
+        if (vertices.length % 3 != 0) {
+            throw new IllegalArgumentException("mesh vertices must hold x, y, z triples, but its length "
+                    + vertices.length + " is not a multiple of 3");
+        }
+        if (indices.length % 3 != 0 || indices.length == 0) {
+            throw new IllegalArgumentException("mesh indices must hold three per triangle and at least one triangle, "
+                    + "but its length was " + indices.length);
+        }
+        for (int i = 0; i < vertices.length; i++) {
+            if (!Double.isFinite(vertices[i])) {
+                throw new IllegalArgumentException(
+                        "mesh vertex " + i / 3 + " has a non-finite coordinate " + vertices[i]);
+            }
+        }
+        int vertexCount = vertices.length / 3;
+        for (int i = 0; i < indices.length; i++) {
+            if (indices[i] < 0 || indices[i] >= vertexCount) {
+                throw new IllegalArgumentException("mesh triangle " + i / 3 + " has vertex index " + indices[i]
+                        + ", but indices must be in [0, " + (vertexCount - 1) + "]");
+            }
+        }
+        if (normals != null) {
+            if (normals.length != vertices.length) {
+                throw new IllegalArgumentException("mesh normals must hold one x, y, z triple per vertex ("
+                        + vertices.length + " values), but had " + normals.length);
+            }
+            for (int i = 0; i < normals.length; i += 3) {
+                if (!(Double.isFinite(normals[i]) && Double.isFinite(normals[i + 1]) && Double.isFinite(normals[i + 2]))
+                        || (normals[i] == 0 && normals[i + 1] == 0 && normals[i + 2] == 0)) {
+                    throw new IllegalArgumentException("mesh normal " + i / 3 + " must be finite and non-zero");
+                }
+            }
+        }
+        this.vertices = vertices.clone();
+        this.indices = indices.clone();
+        this.normals = normals == null ? null : normals.clone();
+    }
+
+    /** Number of triangles, including any of zero area. */
+    public int triangleCount() {
+        return indices.length / 3;
+    }
+
+    public int vertexCount() {
+        return vertices.length / 3;
+    }
+
+    /** Vertex {@code i} of the shared array. */
+    public Point vertex(int i) {
+        return new Point(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);
+    }
+
+    /** Whether triangle {@code i} has no area (it can never be hit). */
+    public boolean isDegenerate(int i) {
+        return WatertightTriangle.normal(vertices, 3 * indices[3 * i], 3 * indices[3 * i + 1], 3 * indices[3 * i + 2])
+                == null;
+    }
+
+    @Override
+    public Vector getNormal(Point point) {
+        // The course API has no triangle index: use the triangle whose plane lies closest to the point.
+        int best = -1;
+        double bestDistance = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < triangleCount(); i++) {
+            Vector n = triangleNormal(i);
+            if (n == null) continue;
+            int a = 3 * indices[3 * i];
+            double d = Math.abs((point.x - vertices[a]) * n.x
+                    + (point.y - vertices[a + 1]) * n.y
+                    + (point.z - vertices[a + 2]) * n.z);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = i;
+            }
+        }
+        return triangleNormal(best);
+    }
+
+    private Vector triangleNormal(int i) {
+        return WatertightTriangle.normal(vertices, 3 * indices[3 * i], 3 * indices[3 * i + 1], 3 * indices[3 * i + 2]);
+    }
+
+    @Override
+    public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
+        boolean found = false;
+        for (int i = 0; i < indices.length; i += 3) {
+            if (WatertightTriangle.intersect(
+                    vertices,
+                    3 * indices[i],
+                    3 * indices[i + 1],
+                    3 * indices[i + 2],
+                    WatertightTriangle.ALL_EDGES_SHARED,
+                    ray,
+                    tMin,
+                    tMax,
+                    hit)) {
+                tMax = hit.t;
+                hit.geometry = this;
+                hit.part = i / 3;
+                found = true;
+            }
+        }
+        return found;
+    }
+
+    @Override
+    public BoundingBox getBoundingBox() {
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int index : indices) {
+            int a = 3 * index;
+            x0 = Math.min(x0, vertices[a]);
+            y0 = Math.min(y0, vertices[a + 1]);
+            z0 = Math.min(z0, vertices[a + 2]);
+            x1 = Math.max(x1, vertices[a]);
+            y1 = Math.max(y1, vertices[a + 1]);
+            z1 = Math.max(z1, vertices[a + 2]);
+        }
+        return new BoundingBox(x0, y0, z0, x1, y1, z1);
+    }
+
+    @Override
+    public void completeHit(Ray ray, HitRecord hit) {
+        int i = hit.part;
+        int a = 3 * indices[3 * i], b = 3 * indices[3 * i + 1], c = 3 * indices[3 * i + 2];
+        WatertightTriangle.completeHit(vertices, a, b, c, hit);
+        Vector normal = WatertightTriangle.normal(vertices, a, b, c);
+        Vector shading = normals == null ? null : interpolatedNormal(a, b, c, hit.u, hit.v);
+        if (shading == null) {
+            shading = normal;
+        } else if (shading.dotProduct(normal) < 0) {
+            normal = normal.scale(-1); // the vertex normals define the outside (as in pbrt)
+        }
+        hit.normal = normal;
+        hit.shadingNormal = shading;
+    }
+
+    /** Barycentric blend of the vertex normals at offsets a, b, c; null if they cancel out. */
+    private Vector interpolatedNormal(int a, int b, int c, double b1, double b2) {
+        double b0 = 1 - b1 - b2;
+        double nx = b0 * normals[a] + b1 * normals[b] + b2 * normals[c];
+        double ny = b0 * normals[a + 1] + b1 * normals[b + 1] + b2 * normals[c + 1];
+        double nz = b0 * normals[a + 2] + b1 * normals[b + 2] + b2 * normals[c + 2];
+        if (nx == 0 && ny == 0 && nz == 0) return null;
+        return new Vector(nx, ny, nz).normalize();
+    }
+}

@@ -1,0 +1,76 @@
+package lighting;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * A point light that shines along a direction: intensity scaled by {@code max(0, dir . l)^narrowBeam}, so the
+ * exponent (default 1) narrows the beam. Attenuation, radius and samples work as for {@link PointLight}.
+ */
+public class SpotLight extends PointLight {
+    private final Vector direction;
+    private double narrowBeam = 1;
+
+    public SpotLight(Color intensity, Point position, Vector direction) {
+        super(intensity, position);
+        this.direction = Util.requireNonNull(direction, "spot direction").normalize();
+    }
+
+    /** The beam exponent: 1 is the plain cosine falloff, larger values narrow the beam. */
+    public SpotLight setNarrowBeam(double narrowBeam) {
+        if (!(narrowBeam >= 1) || !Double.isFinite(narrowBeam)) {
+            throw new IllegalArgumentException("narrowBeam must be >= 1 and finite, but was " + narrowBeam);
+        }
+        this.narrowBeam = narrowBeam;
+        return this;
+    }
+
+    @Override
+    public SpotLight setKc(double kC) {
+        super.setKc(kC);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKl(double kL) {
+        super.setKl(kL);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKq(double kQ) {
+        super.setKq(kQ);
+        return this;
+    }
+
+    @Override
+    public SpotLight setRadius(double radius) {
+        super.setRadius(radius);
+        return this;
+    }
+
+    @Override
+    public SpotLight setNumSamples(int numSamples) {
+        super.setNumSamples(numSamples);
+        return this;
+    }
+
+    @Override
+    public Color getIntensity(Point point) {
+        if (point.equals(getPosition())) return Color.BLACK;
+        double cos = direction.dotProduct(getL(point));
+        if (!(cos > 0)) return Color.BLACK;
+        double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);
+        return super.getIntensity(point).scale(factor);
+    }
+
+    public Vector getDirection() {
+        return direction;
+    }
+
+    public double getNarrowBeam() {
+        return narrowBeam;
+    }
+}

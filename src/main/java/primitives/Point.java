@@ -1,0 +1,92 @@
+package primitives;
+
+/**
+ * An immutable point in 3D space. Coordinates must be finite: a NaN or infinite coordinate is rejected at
+ * construction so it can never spread through a render.
+ */
+public class Point {
+    /** The origin (0,0,0). */
+    public static final Point ZERO = new Point(0, 0, 0);
+
+    public final double x;
+    public final double y;
+    public final double z;
+
+    public Point(double x, double y, double z) {
+        if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z))) {
+            throw new IllegalArgumentException(
+                    "coordinates must be finite, but were (" + x + ", " + y + ", " + z + ")");
+        }
+        this.x = x;
+        this.y = y;
+        this.z = z;
+    }
+
+    /** A point from a triple of coordinates. */
+    public Point(Double3 xyz) {
+        this(xyz.d1, xyz.d2, xyz.d3);
+    }
+
+    public double getX() {
+        return x;
+    }
+
+    public double getY() {
+        return y;
+    }
+
+    public double getZ() {
+        return z;
+    }
+
+    /** This point moved by {@code vector}. */
+    public Point add(Vector vector) {
+        return new Point(x + vector.x, y + vector.y, z + vector.z);
+    }
+
+    /** The vector from {@code other} to this point; an error if the points coincide. */
+    public Vector subtract(Point other) {
+        return new Vector(x - other.x, y - other.y, z - other.z);
+    }
+
+    public double distanceSquared(Point other) {
+        double dx = x - other.x;
+        double dy = y - other.y;
+        double dz = z - other.z;
+        return dx * dx + dy * dy + dz * dz;
+    }
+
+    public double distance(Point other) {
+        return Math.sqrt(distanceSquared(other));
+    }
+
+    /** The coordinates as a triple. */
+    public Double3 toDouble3() {
+        return new Double3(x, y, z);
+    }
+
+    /** Coordinate {@code axis} (0 = x, 1 = y, 2 = z). */
+    public double get(int axis) {
+        return axis == 0 ? x : axis == 1 ? y : z;
+    }
+
+    @Override
+    public boolean equals(Object obj) {
+        if (this == obj) return true;
+        return obj instanceof Point other
+                && obj.getClass() == getClass()
+                && Double.compare(x, other.x) == 0
+                && Double.compare(y, other.y) == 0
+                && Double.compare(z, other.z) == 0;
+    }
+
+    @Override
+    public int hashCode() {
+        return Double.hashCode(x) * 961 + Double.hashCode(y) * 31 + Double.hashCode(z);
+    }
+
+    @Override
+    public String toString() {
+        return "(" + x + ", " + y + ", " + z + ")";
+    }
+}

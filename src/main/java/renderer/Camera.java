@@ -1,0 +1,554 @@
+package renderer;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import primitives.Color;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+import renderer.sampling.SampleStream;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.SuperSamplingBlackboard;
+import renderer.sampling.TargetShape;
+import scene.Scene;
+
+/**
+ * A pinhole (or thin-lens) camera that renders a scene into an image, built with {@link #getBuilder()}.
+ *
+ * <p>The image is split into 16 x 16 tiles taken from a shared queue by N threads (default: the available
+ * processors). Every pixel's random numbers derive from the scene seed and the pixel index, so the image is
+ * bit-identical for any thread count. Per pixel the camera fires one ray through the centre or, with a
+ * {@link SamplingConfig}, a beam over the pixel's area averaged with a box filter (anti-aliasing), optionally
+ * adaptive (recursive subdivision where corner colours differ). With an aperture, every sample becomes a beam
+ * over the lens disk focused on the focal plane (depth of field).
+ */
+public final class Camera implements Cloneable {
+    private static final int TILE = 16;
+    private static final long AA_STREAM = 11, LENS_STREAM = 12, ADAPTIVE_PATHS = 1L << 40;
+
+    private Point location;
+    private Vector vTo, vUp, vRight;
+    private double vpWidth, vpHeight, vpDistance;
+    private int nX, nY;
+    private RayTracerBase rayTracer;
+    private int threads = Runtime.getRuntime().availableProcessors();
+    private RenderSettings settings = RenderSettings.DEFAULT;
+    private SamplingConfig antiAliasing = SamplingConfig.NONE;
+    private double apertureRadius = 0;
+    private double focalDistance = 0;
+    private SamplingConfig apertureSampling = new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED);
+    private ProgressListener progress;
+
+    private ImageWriter image;
+    private RenderStatistics lastStatistics;
+
+    private Camera() {}
+
+    /** A builder for a new camera. */
+    public static Builder getBuilder() {
+        return new Builder();
+    }
+
+    // ------------------------------------------------------------------ settings users change between renders
+
+    /** Anti-aliasing: the beam of camera rays per pixel (NONE or one sample = one central ray). */
+    public Camera setSamplingConfig(SamplingConfig config) {
+        this.antiAliasing = Util.requireNonNull(config, "sampling config");
+        return this;
+    }
+
+    public SamplingConfig getSamplingConfig() {
+        return antiAliasing;
+    }
+
+    /** Render threads, at least 1. */
+    public Camera setThreads(int threads) {
+        if (threads < 1) throw new IllegalArgumentException("threads must be >= 1, but was " + threads);
+        this.threads = threads;
+        return this;
+    }
+
+    public int getThreads() {
+        return threads;
+    }
+
+    /** Render with the BVH (true) or brute force over the same primitives (false). */
+    public Camera setBvh(boolean useBvh) {
+        settings = settings.withBvh(useBvh);
+        return this;
+    }
+
+    public Camera setRenderSettings(RenderSettings settings) {
+        this.settings = Util.requireNonNull(settings, "render settings");
+        return this;
+    }
+
+    public RenderSettings getRenderSettings() {
+        return settings;
+    }
+
+    /**
+     * Depth of field: a lens of {@code apertureRadius} (0 = pinhole) focused at {@code focalDistance} along the
+     * view direction.
+     */
+    public Camera setDepthOfField(double focalDistance, double apertureRadius) {
+        this.focalDistance = Util.requirePositive(focalDistance, "focal distance");
+        this.apertureRadius = Util.requireNonNegative(apertureRadius, "aperture radius");
+        return this;
+    }
+
+    /** The beam of lens samples per pixel sample for depth of field. */
+    public Camera setApertureSampling(SamplingConfig config) {
+        Util.requireNonNull(config, "aperture sampling");
+        this.apertureSampling = config;
+        return this;
+    }
+
+    public Camera setProgressListener(ProgressListener listener) {
+        this.progress = listener;
+        return this;
+    }
+
+    public RayTracerBase getRayTracer() {
+        return rayTracer;
+    }
+
+    public int getNx() {
+        return nX;
+    }
+
+    public int getNy() {
+        return nY;
+    }
+
+    /** The statistics of the last render, or null before the first. */
+    public RenderStatistics getLastStatistics() {
+        return lastStatistics;
+    }
+
+    /** The image of the last render, or null before the first. */
+    public ImageWriter getImage() {
+        return image;
+    }
+
+    // ------------------------------------------------------------------ rays
+
+    /** The ray from the camera through the centre of pixel (j, i): column j from the left, row i from the top. */
+    public Ray constructRay(int nX, int nY, int j, int i) {
+        double u = (j - (nX - 1) / 2.0) * (vpWidth / nX);
+        double v = -(i - (nY - 1) / 2.0) * (vpHeight / nY);
+        return rayThrough(u, v);
+    }
+
+    /** The ray through view-plane coordinates (u right, v up) from the pinhole. */
+    private Ray rayThrough(double u, double v) {
+        double dx = vpDistance * vTo.x + u * vRight.x + v * vUp.x;
+        double dy = vpDistance * vTo.y + u * vRight.y + v * vUp.y;
+        double dz = vpDistance * vTo.z + u * vRight.z + v * vUp.z;
+        return new Ray(location, new Vector(dx, dy, dz));
+    }
+
+    // ------------------------------------------------------------------ rendering
+
+    /** Renders the scene into a new image; statistics are in {@link #getLastStatistics()}. */
+    public Camera renderImage() {
+        long start = System.nanoTime();
+        rayTracer.prepare(settings);
+        double preparation = rayTracer.preparationSeconds();
+        ImageWriter target = new ImageWriter("render", nX, nY);
+        PixelRenderer pixels = new PixelRenderer();
+        int tilesX = (nX + TILE - 1) / TILE, tilesY = (nY + TILE - 1) / TILE, total = tilesX * tilesY;
+        AtomicInteger next = new AtomicInteger();
+        AtomicInteger done = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        int workers = Math.min(threads, total);
+        List<TraceContext> contexts = new ArrayList<>();
+        for (int w = 0; w < workers; w++) contexts.add(new TraceContext());
+        Runnable[] jobs = new Runnable[workers];
+        for (int w = 0; w < workers; w++) {
+            TraceContext ctx = contexts.get(w);
+            jobs[w] = () -> {
+                try {
+                    for (int t = next.getAndIncrement();
+                            t < total && failure.get() == null;
+                            t = next.getAndIncrement()) {
+                        int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
+                        for (int y = y0; y < Math.min(y0 + TILE, nY); y++) {
+                            for (int x = x0; x < Math.min(x0 + TILE, nX); x++) {
+                                target.writePixel(x, y, pixels.render(x, y, ctx));
+                            }
+                        }
+                        int finished = done.incrementAndGet();
+                        if (progress != null) progress.tileFinished(finished, total);
+                    }
+                } catch (Throwable e) {
+                    failure.compareAndSet(null, e);
+                }
+            };
+        }
+        runAll(jobs);
+        Throwable error = failure.get();
+        if (error instanceof RuntimeException re) throw re;
+        if (error instanceof Error err) throw err;
+        if (error != null) throw new IllegalStateException("render failed: " + error, error);
+
+        RayCounters rays = new RayCounters();
+        long visits = 0, tests = 0;
+        for (TraceContext ctx : contexts) {
+            rays.add(ctx.counters);
+            visits += ctx.nodeVisits();
+            tests += ctx.primitiveTests();
+        }
+        double wall = (System.nanoTime() - start) * 1e-9;
+        image = target;
+        lastStatistics = new RenderStatistics(
+                wall, preparation, workers, (long) nX * nY, rays, visits, tests, rayTracer.describePlan());
+        return this;
+    }
+
+    /** Runs the jobs on their own threads, the last one on the calling thread. */
+    private static void runAll(Runnable[] jobs) {
+        Thread[] started = new Thread[jobs.length - 1];
+        for (int i = 0; i < started.length; i++) {
+            started[i] = new Thread(jobs[i], "render-" + i);
+            started[i].start();
+        }
+        jobs[jobs.length - 1].run();
+        for (Thread t : started) {
+            boolean interrupted = false;
+            while (true) {
+                try {
+                    t.join();
+                    break;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+            if (interrupted) Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Writes the last rendered image to {@code images/<name>.png} and returns its path. */
+    public Path writeToImage(String name) {
+        if (image == null) throw new IllegalStateException("renderImage() must be called before writeToImage()");
+        ImageWriter named = new ImageWriter(name, nX, nY);
+        for (int y = 0; y < nY; y++) for (int x = 0; x < nX; x++) named.writePixel(x, y, image.getPixel(x, y));
+        return named.writeToImage();
+    }
+
+    /** Writes the last rendered image as PNG to {@code file}. */
+    public Path writeToImage(Path file) {
+        if (image == null) throw new IllegalStateException("renderImage() must be called before writeToImage()");
+        return image.writeToImage(file);
+    }
+
+    /** Per-render pixel sampling: the beam over the pixel and, with an aperture, over the lens. */
+    private final class PixelRenderer {
+        private final long seed = rayTracer.getScene().getSeed();
+        private final double pixelWidth = vpWidth / nX, pixelHeight = vpHeight / nY;
+        private final boolean planning = settings.planEffects();
+        private final boolean lens = apertureRadius > 0 || (!planning && focalDistance > 0);
+        /** GRID offsets are the same in every pixel: computed once. */
+        private final double[] gridOffsets = antiAliasing.getPattern() == SamplingPattern.GRID
+                ? SuperSamplingBlackboard.getSampleOffsets(antiAliasing, new SampleStream(0))
+                : null;
+
+        private final int adaptiveDepth = adaptiveDepth(antiAliasing);
+
+        Color render(int x, int y, TraceContext ctx) {
+            long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
+            double u = (x - (nX - 1) / 2.0) * pixelWidth;
+            double v = -(y - (nY - 1) / 2.0) * pixelHeight;
+            int count = antiAliasing.getSampleCount();
+            if (count == 1) return sample(u, v, pixelSeed, ctx);
+            if (antiAliasing.isAdaptive() && adaptiveDepth > 0) return adaptive(u, v, pixelSeed, ctx);
+            double[] offsets = gridOffsets;
+            if (offsets == null) {
+                offsets = ctx.offsets(count);
+                SuperSamplingBlackboard.getSampleOffsets(
+                        count,
+                        antiAliasing.getShape(),
+                        antiAliasing.getPattern(),
+                        ctx.random.reset(SampleStream.mix(pixelSeed, AA_STREAM)),
+                        offsets);
+            }
+            ColorAverage average = new ColorAverage();
+            for (int s = 0; s < count; s++) {
+                average.add(sample(
+                        u + offsets[2 * s] * pixelWidth,
+                        v + offsets[2 * s + 1] * pixelHeight,
+                        SampleStream.mix(pixelSeed, s),
+                        ctx));
+            }
+            return average.mean();
+        }
+
+        /** One pixel sample at view-plane point (u, v): a pinhole ray, or a beam over the lens. */
+        private Color sample(double u, double v, long path, TraceContext ctx) {
+            if (!lens) {
+                ctx.counters.camera++;
+                return rayTracer.traceRay(rayThrough(u, v), ctx, path);
+            }
+            int count = apertureSampling.getSampleCount();
+            double[] offsets = ctx.innerOffsets(count);
+            SuperSamplingBlackboard.getSampleOffsets(
+                    count,
+                    TargetShape.CIRCLE,
+                    apertureSampling.getPattern(),
+                    ctx.random.reset(SampleStream.mix(path, LENS_STREAM)),
+                    offsets);
+            // The focal point of this sample: where its pinhole ray meets the focal plane.
+            double scale = focalDistance / vpDistance;
+            double fx = location.x + scale * (vpDistance * vTo.x + u * vRight.x + v * vUp.x);
+            double fy = location.y + scale * (vpDistance * vTo.y + u * vRight.y + v * vUp.y);
+            double fz = location.z + scale * (vpDistance * vTo.z + u * vRight.z + v * vUp.z);
+            double diameter = 2 * apertureRadius;
+            ColorAverage average = new ColorAverage();
+            for (int i = 0; i < count; i++) {
+                double a = offsets[2 * i] * diameter, b = offsets[2 * i + 1] * diameter;
+                Point origin = new Point(
+                        location.x + a * vRight.x + b * vUp.x,
+                        location.y + a * vRight.y + b * vUp.y,
+                        location.z + a * vRight.z + b * vUp.z);
+                Ray ray = new Ray(origin, new Vector(fx - origin.x, fy - origin.y, fz - origin.z));
+                ctx.counters.camera++;
+                ctx.counters.depthOfField++;
+                // A zero aperture (planning off) fires identical rays: same path, so the mean is exact.
+                average.add(rayTracer.traceRay(ray, ctx, apertureRadius > 0 ? SampleStream.mix(path, i) : path));
+            }
+            return average.mean();
+        }
+
+        /**
+         * Adaptive anti-aliasing: colours at the corners of the pixel, subdivided into quadrants where they differ
+         * by more than the threshold, down to a lattice of (2^depth + 1)^2 points that is never exceeded.
+         */
+        private Color adaptive(double u, double v, long pixelSeed, TraceContext ctx) {
+            int side = (1 << adaptiveDepth) + 1;
+            Color[] cache = new Color[side * side];
+            Color c = quadrant(0, 0, side - 1, u, v, pixelSeed, cache, side, ctx);
+            int fired = 0;
+            for (Color cached : cache) if (cached != null) fired++;
+            ctx.counters.samplesSaved += antiAliasing.getSampleCount() - fired;
+            return c;
+        }
+
+        private Color quadrant(
+                int i0, int j0, int size, double u, double v, long seed, Color[] cache, int side, TraceContext ctx) {
+            Color c00 = latticeSample(i0, j0, u, v, seed, cache, side, ctx);
+            Color c10 = latticeSample(i0 + size, j0, u, v, seed, cache, side, ctx);
+            Color c01 = latticeSample(i0, j0 + size, u, v, seed, cache, side, ctx);
+            Color c11 = latticeSample(i0 + size, j0 + size, u, v, seed, cache, side, ctx);
+            if (size == 1 || maxDifference(c00, c10, c01, c11) <= antiAliasing.getAdaptiveThreshold()) {
+                ColorAverage a = new ColorAverage();
+                a.add(c00);
+                a.add(c10);
+                a.add(c01);
+                a.add(c11);
+                return a.mean();
+            }
+            int half = size / 2;
+            ColorAverage a = new ColorAverage();
+            a.add(quadrant(i0, j0, half, u, v, seed, cache, side, ctx));
+            a.add(quadrant(i0 + half, j0, half, u, v, seed, cache, side, ctx));
+            a.add(quadrant(i0, j0 + half, half, u, v, seed, cache, side, ctx));
+            a.add(quadrant(i0 + half, j0 + half, half, u, v, seed, cache, side, ctx));
+            return a.mean();
+        }
+
+        private Color latticeSample(
+                int i, int j, double u, double v, long seed, Color[] cache, int side, TraceContext ctx) {
+            int index = j * side + i;
+            Color c = cache[index];
+            if (c == null) {
+                double du = ((double) i / (side - 1) - 0.5) * pixelWidth;
+                double dv = ((double) j / (side - 1) - 0.5) * pixelHeight;
+                c = sample(u + du, v - dv, SampleStream.mix(seed, ADAPTIVE_PATHS + index), ctx);
+                cache[index] = c;
+            }
+            return c;
+        }
+    }
+
+    /** Deepest subdivision whose lattice of (2^d + 1)^2 points fits the sample budget. */
+    private static int adaptiveDepth(SamplingConfig config) {
+        int depth = 0;
+        while (depth < 10) {
+            long side = (1L << (depth + 1)) + 1;
+            if (side * side > config.getSampleCount()) break;
+            depth++;
+        }
+        return depth;
+    }
+
+    private static double maxDifference(Color... colors) {
+        double max = 0;
+        for (int a = 0; a < colors.length; a++) {
+            for (int b = a + 1; b < colors.length; b++) {
+                max = Math.max(max, Math.abs(colors[a].getR() - colors[b].getR()));
+                max = Math.max(max, Math.abs(colors[a].getG() - colors[b].getG()));
+                max = Math.max(max, Math.abs(colors[a].getB() - colors[b].getB()));
+            }
+        }
+        return max;
+    }
+
+    @Override
+    protected Camera clone() {
+        try {
+            return (Camera) super.clone();
+        } catch (CloneNotSupportedException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    /** Builds a {@link Camera}, validating every setting; build() reports what is missing. */
+    public static final class Builder {
+        private final Camera camera = new Camera();
+
+        private Builder() {}
+
+        public Builder setLocation(Point location) {
+            camera.location = Util.requireNonNull(location, "camera location");
+            return this;
+        }
+
+        /**
+         * The view direction {@code to} and the up direction; up need not be exactly perpendicular (its component
+         * along {@code to} is removed) but must not be parallel to it.
+         */
+        public Builder setDirection(Vector to, Vector up) {
+            Util.requireNonNull(to, "camera direction 'to'");
+            Util.requireNonNull(up, "camera direction 'up'");
+            Vector t = to.normalize();
+            Vector u = up.normalize();
+            double along = u.dotProduct(t);
+            double px = u.x - along * t.x, py = u.y - along * t.y, pz = u.z - along * t.z;
+            if (Math.sqrt(px * px + py * py + pz * pz) < 1e-9) {
+                throw new IllegalArgumentException(
+                        "camera 'up' " + up + " must not be parallel to the view direction " + to);
+            }
+            camera.vTo = t;
+            camera.vUp = new Vector(px, py, pz).normalize();
+            camera.vRight = camera.vTo.crossProduct(camera.vUp).normalize();
+            return this;
+        }
+
+        /** Looks at {@code target} from the location (set the location first) with the given up direction. */
+        public Builder setDirection(Point target, Vector up) {
+            Util.requireNonNull(target, "camera target");
+            if (camera.location == null) {
+                throw new IllegalStateException("set the camera location before aiming it at a target point");
+            }
+            if (target.equals(camera.location)) {
+                throw new IllegalArgumentException("camera target " + target + " must differ from its location");
+            }
+            return setDirection(target.subtract(camera.location), up);
+        }
+
+        /** Looks at {@code target} with +Y as up (or +Z when looking straight along Y). */
+        public Builder setDirection(Point target) {
+            Util.requireNonNull(target, "camera target");
+            if (camera.location == null) {
+                throw new IllegalStateException("set the camera location before aiming it at a target point");
+            }
+            Vector to = target.subtract(camera.location).normalize();
+            return setDirection(to, Math.abs(to.y) > 0.999999 ? Vector.AXIS_Z : Vector.AXIS_Y);
+        }
+
+        /** View-plane width and height, in scene units. */
+        public Builder setVpSize(double width, double height) {
+            camera.vpWidth = Util.requirePositive(width, "view plane width");
+            camera.vpHeight = Util.requirePositive(height, "view plane height");
+            return this;
+        }
+
+        /** Distance from the camera to the view plane. */
+        public Builder setVpDistance(double distance) {
+            camera.vpDistance = Util.requirePositive(distance, "view plane distance");
+            return this;
+        }
+
+        /** Image resolution in pixels. */
+        public Builder setResolution(int nX, int nY) {
+            if (nX < 1 || nY < 1) {
+                throw new IllegalArgumentException("resolution must be positive, but was " + nX + " x " + nY);
+            }
+            camera.nX = nX;
+            camera.nY = nY;
+            return this;
+        }
+
+        public Builder setRayTracer(RayTracerBase rayTracer) {
+            camera.rayTracer = Util.requireNonNull(rayTracer, "ray tracer");
+            return this;
+        }
+
+        public Builder setRayTracer(Scene scene, RayTracerType type) {
+            Util.requireNonNull(scene, "scene");
+            Util.requireNonNull(type, "ray tracer type");
+            camera.rayTracer = switch (type) {
+                case SIMPLE -> new SimpleRayTracer(scene);
+            };
+            return this;
+        }
+
+        public Builder setThreads(int threads) {
+            camera.setThreads(threads);
+            return this;
+        }
+
+        public Builder setBvh(boolean useBvh) {
+            camera.setBvh(useBvh);
+            return this;
+        }
+
+        public Builder setRenderSettings(RenderSettings settings) {
+            camera.setRenderSettings(settings);
+            return this;
+        }
+
+        public Builder setSamplingConfig(SamplingConfig config) {
+            camera.setSamplingConfig(config);
+            return this;
+        }
+
+        public Builder setDepthOfField(double focalDistance, double apertureRadius) {
+            camera.setDepthOfField(focalDistance, apertureRadius);
+            return this;
+        }
+
+        public Builder setApertureSampling(SamplingConfig config) {
+            camera.setApertureSampling(config);
+            return this;
+        }
+
+        public Builder setProgressListener(ProgressListener listener) {
+            camera.setProgressListener(listener);
+            return this;
+        }
+
+        /** The camera; fails naming the first missing setting. */
+        public Camera build() {
+            List<String> missing = new ArrayList<>();
+            if (camera.location == null) missing.add("location (setLocation)");
+            if (camera.vTo == null) missing.add("direction (setDirection)");
+            if (camera.vpWidth == 0) missing.add("view plane size (setVpSize)");
+            if (camera.vpDistance == 0) missing.add("view plane distance (setVpDistance)");
+            if (camera.nX == 0) missing.add("resolution (setResolution)");
+            if (camera.rayTracer == null) missing.add("ray tracer (setRayTracer)");
+            if (!missing.isEmpty()) {
+                throw new IllegalStateException("camera is missing: " + String.join(", ", missing));
+            }
+            if (camera.apertureRadius > 0 && camera.focalDistance == 0) {
+                throw new IllegalStateException("depth of field needs a focal distance");
+            }
+            return camera.clone();
+        }
+    }
+}

@@ -1,0 +1,135 @@
+package renderer;
+
+import geometries.Geometries;
+import geometries.Geometry;
+import geometries.Intersectable;
+import geometries.Plane;
+import geometries.Polygon;
+import java.util.ArrayList;
+import java.util.List;
+import lighting.LightSource;
+import primitives.Material;
+import scene.Scene;
+
+/**
+ * What a render simulates, decided once from the scene and the settings, with the reason for everything it
+ * leaves out: no reflection rays when no material reflects, no refraction rays when nothing is transparent, no
+ * glossy beams without rough mirrors or glass, hard shadows for lights without radius, no shadow rays at all in a
+ * scene whose only surface is flat (it cannot shadow itself). Per shading point the tracer further skips shadow
+ * rays toward lights behind the surface or outside a spot's beam and toward surfaces with no diffuse or specular
+ * response.
+ *
+ * <p>With planning off every flag is true: the tracer fires the skipped rays anyway and multiplies them by zero,
+ * which proves that planning changes the cost and never the image.
+ */
+public final class EffectPlan {
+    final boolean planning;
+    final boolean reflection;
+    final boolean refraction;
+    final boolean glossy;
+    final boolean shadows;
+    private final List<String> simulated = new ArrayList<>();
+    private final List<String> skipped = new ArrayList<>();
+
+    private EffectPlan(Scene scene, RenderSettings settings) {
+        planning = settings.planEffects();
+        MaterialSurvey survey = new MaterialSurvey();
+        survey.visit(scene.geometries);
+
+        boolean reflects = survey.unknown || survey.reflective;
+        boolean transmits = survey.unknown || survey.transparent;
+        boolean rough = survey.unknown || survey.rough;
+        boolean recursion = settings.maxLevel() > 1;
+        reflection = decide(
+                "reflection rays", reflects && recursion, !recursion ? "maxLevel is 1" : "no material has kR > 0");
+        refraction = decide(
+                "refraction rays", transmits && recursion, !recursion ? "maxLevel is 1" : "no material has kT > 0");
+        boolean glossyBeams = settings.glossySampling().isEnabled();
+        glossy = decide(
+                "glossy/frosted beams of " + settings.glossySampling().getSampleCount(),
+                rough && glossyBeams && (reflection || refraction),
+                !glossyBeams
+                        ? "glossy sampling has one sample"
+                        : "no reflective or transparent material has roughness > 0");
+        boolean canShadow = survey.unknown || survey.primitives > 1 || !survey.onlyFlat;
+        shadows = decide(
+                "shadow rays",
+                canShadow && !scene.lights.isEmpty(),
+                scene.lights.isEmpty() ? "the scene has no lights" : "a single flat surface cannot shadow itself");
+        if (shadows) {
+            int soft = 0;
+            for (LightSource light : scene.lights) if (light.isSoft()) soft++;
+            if (soft > 0) simulated.add("soft shadows for " + soft + " of " + scene.lights.size() + " lights");
+            if (soft < scene.lights.size()) {
+                skipped.add("area sampling for " + (scene.lights.size() - soft) + " lights (radius 0 or one sample)");
+            }
+        }
+        simulated.add(
+                "recursion to level " + settings.maxLevel() + ", cut below attenuation " + settings.minAttenuation());
+    }
+
+    /** The plan for rendering {@code scene} with {@code settings}. */
+    public static EffectPlan of(Scene scene, RenderSettings settings) {
+        return new EffectPlan(scene, settings);
+    }
+
+    private boolean decide(String effect, boolean needed, String reason) {
+        if (needed) {
+            simulated.add(effect);
+            return true;
+        }
+        if (planning) {
+            skipped.add(effect + " (" + reason + ")");
+            return false;
+        }
+        simulated.add(effect + " (not needed: " + reason + "; planning off)");
+        return true;
+    }
+
+    /** Whether work that cannot change the image is skipped. */
+    public boolean isPlanning() {
+        return planning;
+    }
+
+    /** The effects simulated. */
+    public List<String> simulated() {
+        return List.copyOf(simulated);
+    }
+
+    /** The effects skipped, each with its reason. */
+    public List<String> skipped() {
+        return List.copyOf(skipped);
+    }
+
+    /** A readable two-line summary. */
+    public String describe() {
+        return "simulated: " + String.join("; ", simulated) + "\nskipped:   "
+                + (skipped.isEmpty() ? "nothing" : String.join("; ", skipped))
+                + (planning ? "" : "\nplanning:  off (skippable rays are fired and weighted by zero)");
+    }
+
+    /** Which optical features the scene's materials use. */
+    private static final class MaterialSurvey {
+        boolean reflective, transparent, rough, unknown;
+        boolean onlyFlat = true;
+        int primitives;
+
+        void visit(Intersectable g) {
+            if (g instanceof Geometries composite) {
+                for (Intersectable member : composite.getMembers()) visit(member);
+                return;
+            }
+            primitives++;
+            if (!(g instanceof Geometry geometry)) {
+                unknown = true; // a user type: assume it may use anything
+                onlyFlat = false;
+                return;
+            }
+            if (!(g instanceof Plane || g instanceof Polygon)) onlyFlat = false;
+            Material m = geometry.getMaterial();
+            reflective |= m.isReflective();
+            transparent |= m.isTransparent();
+            rough |= m.getRoughness() > 0 && (m.isReflective() || m.isTransparent());
+        }
+    }
+}

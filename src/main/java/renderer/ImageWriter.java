@@ -1,0 +1,150 @@
+package renderer;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import javax.imageio.ImageIO;
+import primitives.Color;
+
+/**
+ * An image of linear floating-point pixels that is written once, as PNG, with each channel clamped to 0..255
+ * only then. Writing goes to a temporary file in the target folder which is then moved into place, so an error
+ * or a crash never leaves a truncated or half-written image.
+ */
+public class ImageWriter {
+    /** The folder images go to by default, relative to the working directory. */
+    public static final Path DEFAULT_FOLDER = Path.of("images");
+
+    private final String imageName;
+    private final int nX;
+    private final int nY;
+    private final double[] pixels;
+
+    /**
+     * @param imageName file name without extension; may contain sub-folders, not ".."
+     */
+    public ImageWriter(String imageName, int nX, int nY) {
+        this.imageName = validateName(imageName);
+        if (nX < 1 || nY < 1) {
+            throw new IllegalArgumentException("image resolution must be positive, but was " + nX + " x " + nY);
+        }
+        if ((long) nX * nY > 1L << 28) {
+            throw new IllegalArgumentException(
+                    "image of " + nX + " x " + nY + " pixels is too large (limit 2^28 pixels)");
+        }
+        this.nX = nX;
+        this.nY = nY;
+        this.pixels = new double[3 * nX * nY];
+    }
+
+    private static String validateName(String name) {
+        if (name == null || name.isBlank()) {
+            throw new IllegalArgumentException("image name must not be empty");
+        }
+        Path path = Path.of(name);
+        if (path.isAbsolute() || name.contains("..")) {
+            throw new IllegalArgumentException(
+                    "image name must be a relative name without '..', but was '" + name + "'");
+        }
+        return name;
+    }
+
+    public String getImageName() {
+        return imageName;
+    }
+
+    public int getNx() {
+        return nX;
+    }
+
+    public int getNy() {
+        return nY;
+    }
+
+    /** Sets pixel (x, y), x to the right and y downward from the top-left corner. */
+    public void writePixel(int xIndex, int yIndex, Color color) {
+        checkIndex(xIndex, yIndex);
+        if (Double.isNaN(color.getR()) || Double.isNaN(color.getG()) || Double.isNaN(color.getB())) {
+            throw new IllegalArgumentException("pixel (" + xIndex + ", " + yIndex + ") colour is NaN: " + color);
+        }
+        int o = 3 * (yIndex * nX + xIndex);
+        pixels[o] = color.getR();
+        pixels[o + 1] = color.getG();
+        pixels[o + 2] = color.getB();
+    }
+
+    /** The linear (unclamped) colour of pixel (x, y). */
+    public Color getPixel(int xIndex, int yIndex) {
+        checkIndex(xIndex, yIndex);
+        int o = 3 * (yIndex * nX + xIndex);
+        return new Color(pixels[o], pixels[o + 1], pixels[o + 2]);
+    }
+
+    private void checkIndex(int x, int y) {
+        if (x < 0 || x >= nX || y < 0 || y >= nY) {
+            throw new IllegalArgumentException(
+                    "pixel (" + x + ", " + y + ") is outside the " + nX + " x " + nY + " image");
+        }
+    }
+
+    /** The image as 8-bit RGB, each channel clamped to 0..255 and rounded. */
+    public BufferedImage toBufferedImage() {
+        BufferedImage image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < nY; y++) {
+            for (int x = 0; x < nX; x++) {
+                int o = 3 * (y * nX + x);
+                image.setRGB(x, y, (channel(pixels[o]) << 16) | (channel(pixels[o + 1]) << 8) | channel(pixels[o + 2]));
+            }
+        }
+        return image;
+    }
+
+    private static int channel(double value) {
+        if (!(value > 0)) return 0;
+        if (value >= 255) return 255;
+        return (int) Math.round(value);
+    }
+
+    /** Writes {@code images/<name>.png} (folders created as needed) and returns its path. */
+    public Path writeToImage() {
+        return writeToImage(DEFAULT_FOLDER.resolve(imageName + ".png"));
+    }
+
+    /**
+     * Writes the image as PNG to {@code file}, creating missing parent folders. The bytes go to a temporary
+     * file beside it first and are moved into place only when complete.
+     */
+    public Path writeToImage(Path file) {
+        Path target = file.toAbsolutePath();
+        Path folder = target.getParent();
+        Path temp = null;
+        try {
+            Files.createDirectories(folder);
+            temp = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
+            if (!ImageIO.write(toBufferedImage(), "png", temp.toFile())) {
+                throw new IOException("no PNG writer is available in this JDK");
+            }
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            temp = null;
+            return target;
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
+        } finally {
+            if (temp != null) {
+                try {
+                    Files.deleteIfExists(temp);
+                } catch (IOException ignored) {
+                    // the original error is the one worth reporting
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,34 @@
+package renderer;
+
+/**
+ * Per-thread counts of the rays fired by kind and of adaptive savings. Plain fields, no synchronisation: every
+ * render thread owns one and they are summed once at the end.
+ */
+public final class RayCounters {
+    public long camera;
+    public long shadow;
+    public long reflection;
+    public long refraction;
+    /** Secondary rays of rough (glossy or frosted) surfaces; also counted as reflection or refraction. */
+    public long glossy;
+    /** Camera rays through a lens aperture (depth of field); also counted as camera rays. */
+    public long depthOfField;
+    /** Samples that adaptive anti-aliasing and adaptive shadows did not need to fire. */
+    public long samplesSaved;
+
+    /** Adds another thread's counts to these. */
+    public void add(RayCounters other) {
+        camera += other.camera;
+        shadow += other.shadow;
+        reflection += other.reflection;
+        refraction += other.refraction;
+        glossy += other.glossy;
+        depthOfField += other.depthOfField;
+        samplesSaved += other.samplesSaved;
+    }
+
+    /** All rays fired. */
+    public long total() {
+        return camera + shadow + reflection + refraction;
+    }
+}

@@ -1,0 +1,126 @@
+package renderer.sampling;
+
+/**
+ * Generates the 2D offsets of a beam of rays over a target area: the square {@code [-1/2, 1/2]^2} for
+ * {@link TargetShape#RECTANGLE} or the disk of diameter 1 for {@link TargetShape#CIRCLE}; callers scale them to
+ * the pixel, light or lens.
+ *
+ * <p>The requested count is honoured exactly. GRID and JITTERED use {@code round(sqrt(n))} rows whose lengths
+ * differ by at most one, so 5 samples are a row of 3 and a row of 2, not a silent 2 x 2. Disks are covered by the
+ * concentric mapping of Shirley and Chiu, which keeps the strata of the square intact.
+ */
+public final class SuperSamplingBlackboard {
+    private SuperSamplingBlackboard() {}
+
+    /** The offsets for {@code config} as a new array of x, y pairs. */
+    public static double[] getSampleOffsets(SamplingConfig config, SampleStream random) {
+        double[] out = new double[2 * config.getSampleCount()];
+        getSampleOffsets(config.getSampleCount(), config.getShape(), config.getPattern(), random, out);
+        return out;
+    }
+
+    /**
+     * Writes {@code count} x, y pairs into {@code out}. {@code random} feeds JITTERED, RANDOM and the HALTON
+     * rotation; GRID ignores it. A single sample is always the centre.
+     */
+    public static void getSampleOffsets(
+            int count, TargetShape shape, SamplingPattern pattern, SampleStream random, double[] out) {
+        if (count < 1) throw new IllegalArgumentException("sample count must be >= 1, but was " + count);
+        if (out.length < 2 * count) {
+            throw new IllegalArgumentException(
+                    "output holds " + out.length / 2 + " samples, but " + count + " requested");
+        }
+        if (count == 1) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
+        switch (pattern) {
+            case GRID -> stratified(count, null, out);
+            case JITTERED -> stratified(count, random, out);
+            case RANDOM -> {
+                for (int i = 0; i < count; i++) {
+                    out[2 * i] = random.nextDouble();
+                    out[2 * i + 1] = random.nextDouble();
+                }
+            }
+            case HALTON -> {
+                double rx = random.nextDouble(), ry = random.nextDouble();
+                for (int i = 0; i < count; i++) {
+                    out[2 * i] = wrap(radicalInverse2(i + 1) + rx);
+                    out[2 * i + 1] = wrap(radicalInverse(3, i + 1) + ry);
+                }
+            }
+        }
+        for (int i = 0; i < count; i++) {
+            double u = out[2 * i], v = out[2 * i + 1];
+            if (shape == TargetShape.CIRCLE) {
+                concentricDisk(u, v, out, 2 * i);
+            } else {
+                out[2 * i] = u - 0.5;
+                out[2 * i + 1] = v - 0.5;
+            }
+        }
+    }
+
+    /** Writes one uniformly random point of the disk of diameter 1 at {@code out[at]}, {@code out[at + 1]}. */
+    public static void randomPointInDisk(SampleStream random, double[] out, int at) {
+        concentricDisk(random.nextDouble(), random.nextDouble(), out, at);
+    }
+
+    /** Points in [0,1)^2, rows of near-equal length; cell centres, or jittered within cells. */
+    private static void stratified(int count, SampleStream random, double[] out) {
+        int rows = (int) Math.round(Math.sqrt(count));
+        int base = count / rows, extra = count % rows;
+        int i = 0;
+        for (int r = 0; r < rows; r++) {
+            int columns = base + (r < extra ? 1 : 0);
+            for (int c = 0; c < columns; c++) {
+                double ju = random == null ? 0.5 : random.nextDouble();
+                double jv = random == null ? 0.5 : random.nextDouble();
+                out[2 * i] = (c + ju) / columns;
+                out[2 * i + 1] = (r + jv) / rows;
+                i++;
+            }
+        }
+    }
+
+    /** Maps [0,1)^2 onto the disk of radius 1/2, area-preserving and stratum-preserving. */
+    private static void concentricDisk(double u, double v, double[] out, int at) {
+        double a = 2 * u - 1, b = 2 * v - 1;
+        if (a == 0 && b == 0) {
+            out[at] = 0;
+            out[at + 1] = 0;
+            return;
+        }
+        double r, theta;
+        if (Math.abs(a) > Math.abs(b)) {
+            r = a;
+            theta = Math.PI / 4 * (b / a);
+        } else {
+            r = b;
+            theta = Math.PI / 2 - Math.PI / 4 * (a / b);
+        }
+        out[at] = 0.5 * r * Math.cos(theta);
+        out[at + 1] = 0.5 * r * Math.sin(theta);
+    }
+
+    private static double wrap(double x) {
+        return x >= 1 ? x - 1 : x;
+    }
+
+    /** Van der Corput in base 2 by bit reversal. */
+    static double radicalInverse2(int i) {
+        return (Integer.reverse(i) >>> 1) * 0x1.0p-31;
+    }
+
+    static double radicalInverse(int base, int i) {
+        double inverseBase = 1.0 / base, factor = inverseBase, result = 0;
+        while (i > 0) {
+            result += (i % base) * factor;
+            i /= base;
+            factor *= inverseBase;
+        }
+        return result;
+    }
+}
