@@ -150,10 +150,14 @@ public class SimpleRayTracer extends RayTracerBase {
         Vector e1 = l.perpendicular();
         Vector e2 = l.crossProduct(e1);
         long seed = SampleStream.mix(SampleStream.mix(path, SHADOW), lightIndex);
+        double[] offsets = ctx.shadowOffsets(count);
         if (settings.adaptiveShadows()) {
-            int probes = Math.max(4, (int) Math.round(Math.sqrt(count)));
+            // Probe the centre and a ring on the rim first: an occluder edge that crosses the disk almost surely
+            // separates two of them, so agreement means the point is fully lit or in the umbra.
+            int probes = Math.max(5, (int) Math.round(Math.sqrt(count)));
             if (probes < count) {
-                Double3 probe = diskVisibility(sp, position, e1, e2, diameter, probes, seed, ctx);
+                SuperSamplingBlackboard.getProbeOffsets(probes, ctx.random.reset(seed), offsets);
+                Double3 probe = diskVisibility(sp, position, e1, e2, diameter, probes, offsets, ctx);
                 if (probe.isZero() || probe.equals(Double3.ONE)) {
                     ctx.counters.samplesSaved += count - probes;
                     return probe;
@@ -161,18 +165,24 @@ public class SimpleRayTracer extends RayTracerBase {
                 seed = SampleStream.mix(seed, 1);
             }
         }
-        return diskVisibility(sp, position, e1, e2, diameter, count, seed, ctx);
+        SuperSamplingBlackboard.getSampleOffsets(
+                count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
+        return diskVisibility(sp, position, e1, e2, diameter, count, offsets, ctx);
     }
 
     /**
-     * Mean transmittance of {@code count} shadow rays toward points of the disk; exactly 1 when all are clear and
-     * exactly 0 when all are blocked.
+     * Mean transmittance of the shadow rays toward {@code count} points of the disk given by {@code offsets};
+     * exactly 1 when all are clear and exactly 0 when all are blocked.
      */
     private Double3 diskVisibility(
-            SurfacePoint sp, Point c, Vector e1, Vector e2, double diameter, int count, long seed, TraceContext ctx) {
-        double[] offsets = ctx.offsets(count);
-        SuperSamplingBlackboard.getSampleOffsets(
-                count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
+            SurfacePoint sp,
+            Point c,
+            Vector e1,
+            Vector e2,
+            double diameter,
+            int count,
+            double[] offsets,
+            TraceContext ctx) {
         double r = 0, g = 0, b = 0;
         int clear = 0, blocked = 0;
         for (int i = 0; i < count; i++) {
@@ -287,13 +297,18 @@ public class SimpleRayTracer extends RayTracerBase {
         Vector e1 = ideal.perpendicular();
         Vector e2 = ideal.crossProduct(e1);
         double diameter = 2 * roughness;
-        int count = maySplit ? glossy.getSampleCount() : 1;
-        double[] offsets = ctx.innerOffsets(count);
+        int count;
+        double[] offsets;
         if (maySplit) {
+            count = glossy.getSampleCount();
+            offsets = ctx.glossyOffsets(count);
             SuperSamplingBlackboard.getSampleOffsets(
                     count, TargetShape.CIRCLE, glossy.getPattern(), ctx.random.reset(path), offsets);
         } else {
-            // Below the first rough bounce: one random ray in the cone, so the cost stays linear in depth.
+            // Below the first rough bounce: one random ray in the cone, so the cost stays linear in depth. (Its own
+            // array: the beam above this one is still reading the shared buffer.)
+            count = 1;
+            offsets = new double[2];
             SuperSamplingBlackboard.randomPointInDisk(ctx.random.reset(path), offsets, 0);
         }
         ColorAverage average = new ColorAverage();

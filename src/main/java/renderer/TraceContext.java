@@ -17,20 +17,35 @@ public final class TraceContext {
     /** Counts of the rays this thread fired. */
     public final RayCounters counters = new RayCounters();
 
-    private double[] offsets = new double[2 * 81];
+    /** Sample buffers, one per kind of beam: beams of different kinds nest, beams of one kind never do. */
+    private double[] pixelOffsets = new double[2 * 81];
 
-    /** A buffer for {@code count} sample offsets (x, y pairs), grown on demand. */
-    public double[] offsets(int count) {
-        if (offsets.length < 2 * count) offsets = new double[2 * count];
-        return offsets;
+    private double[] lensOffsets = new double[2 * 16];
+    private double[] shadowOffsets = new double[2 * 81];
+    private double[] glossyOffsets = new double[2 * 16];
+
+    /** Buffer for {@code count} offsets of anti-aliasing samples over a pixel. */
+    public double[] pixelOffsets(int count) {
+        if (pixelOffsets.length < 2 * count) pixelOffsets = new double[2 * count];
+        return pixelOffsets;
     }
 
-    /** A second buffer, for when one beam of samples is nested in another. */
-    private double[] innerOffsets = new double[2 * 81];
+    /** Buffer for {@code count} offsets of depth-of-field samples over the lens. */
+    public double[] lensOffsets(int count) {
+        if (lensOffsets.length < 2 * count) lensOffsets = new double[2 * count];
+        return lensOffsets;
+    }
 
-    public double[] innerOffsets(int count) {
-        if (innerOffsets.length < 2 * count) innerOffsets = new double[2 * count];
-        return innerOffsets;
+    /** Buffer for {@code count} offsets of shadow rays over a light's disk. */
+    public double[] shadowOffsets(int count) {
+        if (shadowOffsets.length < 2 * count) shadowOffsets = new double[2 * count];
+        return shadowOffsets;
+    }
+
+    /** Buffer for {@code count} offsets of a glossy or frosted beam (only the first rough bounce splits). */
+    public double[] glossyOffsets(int count) {
+        if (glossyOffsets.length < 2 * count) glossyOffsets = new double[2 * count];
+        return glossyOffsets;
     }
 
     /** BVH nodes visited and primitives tested, over both records. */

@@ -63,6 +63,23 @@ public final class SuperSamplingBlackboard {
         }
     }
 
+    /**
+     * Probe points for adaptive sampling of a disk of diameter 1: the centre and {@code count - 1} points evenly
+     * spaced on the rim, rotated by a random angle. A straight edge crossing the disk separates two of them unless
+     * it cuts off less than the circular segment between neighbouring rim points.
+     */
+    public static void getProbeOffsets(int count, SampleStream random, double[] out) {
+        if (count < 2) throw new IllegalArgumentException("probe count must be >= 2, but was " + count);
+        out[0] = 0;
+        out[1] = 0;
+        double rotation = 2 * Math.PI * random.nextDouble();
+        for (int i = 1; i < count; i++) {
+            double angle = rotation + 2 * Math.PI * (i - 1) / (count - 1);
+            out[2 * i] = 0.5 * Math.cos(angle);
+            out[2 * i + 1] = 0.5 * Math.sin(angle);
+        }
+    }
+
     /** Writes one uniformly random point of the disk of diameter 1 at {@code out[at]}, {@code out[at + 1]}. */
     public static void randomPointInDisk(SampleStream random, double[] out, int at) {
         concentricDisk(random.nextDouble(), random.nextDouble(), out, at);

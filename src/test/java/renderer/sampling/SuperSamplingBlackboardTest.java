@@ -1,0 +1,185 @@
+package renderer.sampling;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/** The blackboard's sample offsets: exact counts, inside the target, even coverage, determinism. */
+class SuperSamplingBlackboardTest {
+
+    static Stream<Arguments> everyPatternShapeAndCount() {
+        List<Arguments> cases = new ArrayList<>();
+        for (SamplingPattern pattern : SamplingPattern.values()) {
+            for (TargetShape shape : TargetShape.values()) {
+                for (int count : new int[] {1, 2, 3, 5, 7, 10, 16, 17, 81, 100, 257}) {
+                    cases.add(Arguments.of(pattern, shape, count));
+                }
+            }
+        }
+        return cases.stream();
+    }
+
+    @ParameterizedTest(name = "{0} {1} {2}")
+    @MethodSource("everyPatternShapeAndCount")
+    void honoursTheCountExactlyAndStaysInsideTheTarget(SamplingPattern pattern, TargetShape shape, int count) {
+        double[] offsets = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(count, shape, pattern), new SampleStream(42));
+        assertEquals(2 * count, offsets.length, "one x, y pair per requested sample");
+        for (int i = 0; i < count; i++) {
+            double x = offsets[2 * i], y = offsets[2 * i + 1];
+            if (shape == TargetShape.RECTANGLE) {
+                assertTrue(Math.abs(x) <= 0.5 && Math.abs(y) <= 0.5, "sample " + i + " (" + x + ", " + y + ")");
+            } else {
+                assertTrue(x * x + y * y <= 0.25 + 1e-12, "sample " + i + " (" + x + ", " + y + ") outside the disk");
+            }
+        }
+        if (count > 1 && pattern != SamplingPattern.RANDOM) {
+            // Distinct positions: no two samples of a stratified or low-discrepancy set coincide.
+            for (int i = 0; i < count; i++) {
+                for (int j = i + 1; j < count; j++) {
+                    assertFalse(
+                            offsets[2 * i] == offsets[2 * j] && offsets[2 * i + 1] == offsets[2 * j + 1],
+                            "samples " + i + " and " + j + " coincide");
+                }
+            }
+        }
+    }
+
+    @Test
+    void oneSampleIsTheCentre() {
+        for (SamplingPattern pattern : SamplingPattern.values()) {
+            for (TargetShape shape : TargetShape.values()) {
+                assertArrayEquals(
+                        new double[] {0, 0},
+                        SuperSamplingBlackboard.getSampleOffsets(
+                                new SamplingConfig(1, shape, pattern), new SampleStream(7)));
+            }
+        }
+    }
+
+    @Test
+    void fiveGridSamplesAreFiveNotFour() {
+        double[] offsets = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(5, TargetShape.RECTANGLE, SamplingPattern.GRID), new SampleStream(0));
+        assertEquals(10, offsets.length);
+        // Two rows (round(sqrt 5) = 2) of 3 and 2 cell centres.
+        assertArrayEquals(
+                new double[] {-1 / 3.0, -0.25, 0, -0.25, 1 / 3.0, -0.25, -0.25, 0.25, 0.25, 0.25}, offsets, 1e-15);
+    }
+
+    @Test
+    void gridIsTheLatticeOfCellCentres() {
+        double[] offsets = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(9, TargetShape.RECTANGLE, SamplingPattern.GRID), new SampleStream(0));
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                int i = 3 * r + c;
+                assertEquals((c + 0.5) / 3 - 0.5, offsets[2 * i], 1e-15);
+                assertEquals((r + 0.5) / 3 - 0.5, offsets[2 * i + 1], 1e-15);
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @MethodSource("seeds")
+    void jitteredPutsExactlyOneSampleInEachCell(long seed) {
+        double[] offsets = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(64, TargetShape.RECTANGLE, SamplingPattern.JITTERED), new SampleStream(seed));
+        int[] cells = new int[64];
+        for (int i = 0; i < 64; i++) {
+            int cx = (int) Math.floor((offsets[2 * i] + 0.5) * 8);
+            int cy = (int) Math.floor((offsets[2 * i + 1] + 0.5) * 8);
+            cells[cy * 8 + cx]++;
+        }
+        for (int cell = 0; cell < 64; cell++) assertEquals(1, cells[cell], "cell " + cell + " (seed " + seed + ")");
+    }
+
+    static Stream<Long> seeds() {
+        return Stream.of(1L, 2L, 3L, 0xDEADBEEFL, -5L);
+    }
+
+    @Test
+    void sameStreamSameOffsetsDifferentStreamDifferentOffsets() {
+        SamplingConfig config = new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED);
+        double[] a = SuperSamplingBlackboard.getSampleOffsets(config, new SampleStream(99));
+        double[] b = SuperSamplingBlackboard.getSampleOffsets(config, new SampleStream(99));
+        double[] c = SuperSamplingBlackboard.getSampleOffsets(config, new SampleStream(100));
+        assertArrayEquals(a, b);
+        assertFalse(java.util.Arrays.equals(a, c));
+    }
+
+    /**
+     * The low-discrepancy pattern integrates a smooth function better than independent random points: over many
+     * seeds, the mean squared error of the sample mean of f(x, y) = sin(3x) cos(2y) + x y is smaller.
+     */
+    @Test
+    void haltonBeatsRandomAtEqualSampleCount() {
+        int count = 64, trials = 200;
+        double exact = integrate();
+        double haltonError = 0, randomError = 0;
+        for (int t = 0; t < trials; t++) {
+            haltonError += squaredError(SamplingPattern.HALTON, count, t, exact);
+            randomError += squaredError(SamplingPattern.RANDOM, count, t, exact);
+        }
+        assertTrue(
+                haltonError * 4 < randomError,
+                "Halton MSE " + haltonError / trials + " should be far below random MSE " + randomError / trials);
+    }
+
+    private static double squaredError(SamplingPattern pattern, int count, long seed, double exact) {
+        double[] o = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(count, TargetShape.RECTANGLE, pattern), new SampleStream(seed));
+        double sum = 0;
+        for (int i = 0; i < count; i++) sum += f(o[2 * i], o[2 * i + 1]);
+        double e = sum / count - exact;
+        return e * e;
+    }
+
+    private static double f(double x, double y) {
+        return Math.sin(3 * x) * Math.cos(2 * y) + x * y + x * x;
+    }
+
+    /** Midpoint rule on a fine grid: independent of the code under test. */
+    private static double integrate() {
+        int n = 2000;
+        double sum = 0;
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) sum += f((i + 0.5) / n - 0.5, (j + 0.5) / n - 0.5);
+        }
+        return sum / ((double) n * n);
+    }
+
+    @Test
+    void diskSamplesCoverTheDiskEvenly() {
+        // Equal-area rings: the inner disk of radius 0.5/sqrt(2) holds half the area, so about half the samples.
+        double[] o = SuperSamplingBlackboard.getSampleOffsets(
+                new SamplingConfig(400, TargetShape.CIRCLE, SamplingPattern.GRID), new SampleStream(0));
+        int inner = 0;
+        for (int i = 0; i < 400; i++) {
+            if (o[2 * i] * o[2 * i] + o[2 * i + 1] * o[2 * i + 1] < 0.125) inner++;
+        }
+        assertEquals(200, inner, 12, "samples in the inner half-area disk");
+    }
+
+    @Test
+    void rejectsBadCountsAndBuffers() {
+        IllegalArgumentException e = assertThrows(
+                IllegalArgumentException.class,
+                () -> new SamplingConfig(0, TargetShape.RECTANGLE, SamplingPattern.GRID));
+        assertTrue(e.getMessage().contains("sampleCount") && e.getMessage().contains("0"), e.getMessage());
+        assertThrows(
+                IllegalArgumentException.class,
+                () -> SuperSamplingBlackboard.getSampleOffsets(
+                        4, TargetShape.RECTANGLE, SamplingPattern.GRID, new SampleStream(0), new double[6]));
+    }
+}
