@@ -26,27 +26,44 @@ public final class Showcase {
     private Showcase() {}
 
     public static void main(String[] args) {
-        Scene scene = scene();
-        Camera camera = Camera.getBuilder()
-                .setLocation(new Point(0, -420, 160))
-                .setDirection(new Point(0, 0, 40), Vector.AXIS_Z)
-                .setVpDistance(400)
-                .setVpSize(320, 200)
-                .setResolution(800, 500)
+        Camera camera = camera(scene(), 800, 500)
                 .setSamplingConfig(new SamplingConfig(9, TargetShape.RECTANGLE, SamplingPattern.JITTERED))
-                .setRayTracer(scene, RayTracerType.SIMPLE)
                 .build();
         camera.renderImage();
         System.out.println("wrote " + camera.writeToImage("showcase"));
         System.out.print(camera.getLastStatistics().format());
     }
 
-    /** Glass and mirror spheres, a capped cylinder and a polygon on a chequered floor, under soft lights. */
+    /** The showcase view of {@code scene} at the given resolution (16:10). */
+    public static Camera.Builder camera(Scene scene, int width, int height) {
+        return Camera.getBuilder()
+                .setLocation(new Point(0, -420, 160))
+                .setDirection(new Point(0, 0, 40), Vector.AXIS_Z)
+                .setVpDistance(400)
+                .setVpSize(320, 200)
+                .setResolution(width, height)
+                .setRayTracer(scene, RayTracerType.SIMPLE);
+    }
+
+    /** Glass and mirror spheres, a capped cylinder, a mirror wall and a triangle on a floor, under soft lights. */
     public static Scene scene() {
+        return scene(true, 0);
+    }
+
+    /**
+     * The showcase scene with its lights soft (radius and 16 samples) or hard, and the floor's roughness (0 is a
+     * clear reflection, larger values a glossy one).
+     */
+    public static Scene scene(boolean softLights, double floorRoughness) {
         Scene scene = new Scene("showcase")
                 .setBackground(new Color(12, 14, 28))
                 .setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.06));
-        Material floor = new Material().setKd(0.5).setKs(0.2).setShininess(40).setKr(0.15);
+        Material floor = new Material()
+                .setKd(0.5)
+                .setKs(0.2)
+                .setShininess(40)
+                .setKr(0.15)
+                .setRoughness(floorRoughness);
         scene.geometries.add(new Plane(new Point(0, 0, 0), Vector.AXIS_Z)
                 .setEmission(new Color(30, 30, 36))
                 .setMaterial(floor));
@@ -85,12 +102,12 @@ public final class Showcase {
         scene.lights.add(new PointLight(new Color(260, 230, 190), new Point(-120, -160, 260))
                 .setKl(0.0008)
                 .setKq(0.000002)
-                .setRadius(25)
+                .setRadius(softLights ? 25 : 0)
                 .setNumSamples(16));
         scene.lights.add(new SpotLight(new Color(220, 260, 340), new Point(200, -200, 300), new Vector(-1, 1, -1.5))
                 .setNarrowBeam(4)
                 .setKl(0.0005)
-                .setRadius(10)
+                .setRadius(softLights ? 10 : 0)
                 .setNumSamples(16));
         scene.lights.add(new DirectionalLight(new Color(25, 25, 40), new Vector(0.3, 1, -1)));
         return scene;
