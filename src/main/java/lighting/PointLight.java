@@ -15,6 +15,7 @@ public class PointLight implements LightSource {
     private double kC = 1, kL = 0, kQ = 0;
     private double radius = 0;
     private int numSamples = 1;
+    private double range = Double.POSITIVE_INFINITY;
 
     public PointLight(Color intensity, Point position) {
         this.intensity = Util.requireNonNull(intensity, "light intensity");
@@ -51,9 +52,24 @@ public class PointLight implements LightSource {
         return this;
     }
 
+    /**
+     * Distance beyond which the light contributes nothing (a hard cut-off, as lights in games and modelling tools
+     * have); infinite by default. Points beyond it cost no shadow rays.
+     */
+    public PointLight setRange(double range) {
+        if (!(range > 0)) throw new IllegalArgumentException("light range must be positive, but was " + range);
+        this.range = range;
+        return this;
+    }
+
+    public double getRange() {
+        return range;
+    }
+
     @Override
     public Color getIntensity(Point point) {
         double d = getDistance(point);
+        if (d > range) return Color.BLACK;
         double attenuation = kC + kL * d + kQ * d * d;
         if (!(attenuation > 0)) {
             throw new IllegalStateException("light attenuation kC + kL d + kQ d^2 must be positive, but was "

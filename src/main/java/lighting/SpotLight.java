@@ -58,6 +58,12 @@ public class SpotLight extends PointLight {
     }
 
     @Override
+    public SpotLight setRange(double range) {
+        super.setRange(range);
+        return this;
+    }
+
+    @Override
     public Color getIntensity(Point point) {
         if (point.equals(getPosition())) return Color.BLACK;
         double cos = direction.dotProduct(getL(point));

@@ -16,8 +16,8 @@ import scene.Scene;
  * leaves out: no reflection rays when no material reflects, no refraction rays when nothing is transparent, no
  * glossy beams without rough mirrors or glass, hard shadows for lights without radius, no shadow rays at all in a
  * scene whose only surface is flat (it cannot shadow itself). Per shading point the tracer further skips shadow
- * rays toward lights behind the surface or outside a spot's beam and toward surfaces with no diffuse or specular
- * response.
+ * rays toward lights behind the surface, outside a spot's beam or beyond a light's range, and from surfaces with
+ * no diffuse or specular response.
  *
  * <p>With planning off every flag is true: the tracer fires the skipped rays anyway and multiplies them by zero,
  * which proves that planning changes the cost and never the image.

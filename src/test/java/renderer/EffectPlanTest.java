@@ -106,6 +106,18 @@ class EffectPlanTest {
     }
 
     @Test
+    void aLightFiresNoShadowRaysBeyondItsRange() {
+        Scene scene = matte();
+        scene.lights.clear();
+        scene.lights.add(new PointLight(new Color(300, 300, 300), new Point(0, 0, 200)).setRange(100));
+        Camera camera = camera(scene).build().renderImage();
+        assertEquals(0, camera.getLastStatistics().rays().shadow, "every visible point is over 100 away");
+        scene.lights.clear();
+        scene.lights.add(new PointLight(new Color(300, 300, 300), new Point(0, 0, 200)).setRange(1000));
+        assertTrue(camera(scene).build().renderImage().getLastStatistics().rays().shadow > 0);
+    }
+
+    @Test
     void aSingleFlatSurfaceNeedsNoShadowTestAtAll() {
         Scene scene = new Scene("floor");
         scene.geometries.add(new Plane(Point.ZERO, Vector.AXIS_Z).setMaterial(new Material().setKd(0.7)));
