@@ -14,14 +14,15 @@ import primitives.Vector;
  * (pbrt-v4's {@code OffsetRayOrigin}). The offset scales with the coordinates, so there is neither acne far from
  * the origin nor a missed thin gap near it, and no fixed epsilon.
  */
-final class SurfacePoint {
-    final Geometry geometry;
-    final Point point;
-    final Vector normal;
-    final Vector shadingNormal;
+public final class SurfacePoint {
+    public final Geometry geometry;
+    public final Point point;
+    public final Vector normal;
+    public final Vector shadingNormal;
     private final double errorX, errorY, errorZ;
 
-    SurfacePoint(HitRecord hit) {
+    /** Copies a completed hit ({@link Geometry#completeHit} must have filled it). */
+    public SurfacePoint(HitRecord hit) {
         geometry = hit.geometry;
         point = hit.point;
         normal = hit.normal;
@@ -31,8 +32,13 @@ final class SurfacePoint {
         errorZ = hit.errorZ;
     }
 
+    /** A ray leaving this point in {@code direction}, from the offset origin. */
+    public primitives.Ray spawnRay(Vector direction) {
+        return new primitives.Ray(spawnOrigin(direction.x, direction.y, direction.z), direction);
+    }
+
     /** The origin of a ray leaving this point in direction (dx, dy, dz). */
-    Point spawnOrigin(double dx, double dy, double dz) {
+    public Point spawnOrigin(double dx, double dy, double dz) {
         double nx = normal.x, ny = normal.y, nz = normal.z;
         double d = Math.abs(nx) * errorX + Math.abs(ny) * errorY + Math.abs(nz) * errorZ;
         if (nx * dx + ny * dy + nz * dz < 0) d = -d;
