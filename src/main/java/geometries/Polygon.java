@@ -92,14 +92,22 @@ public class Polygon extends Geometry {
         int count = v.length;
         BoundingBox bounds = BoundingBox.of(v);
         double size = bounds.getMin().distance(bounds.getMax());
-        double planeTolerance = SHAPE_TOLERANCE * size;
+        // Relative to the polygon's size, plus the rounding of coordinates far from the origin.
+        double magnitude = Math.max(
+                Math.max(Math.abs(bounds.minX), Math.abs(bounds.maxX)),
+                Math.max(
+                        Math.max(Math.abs(bounds.minY), Math.abs(bounds.maxY)),
+                        Math.max(Math.abs(bounds.minZ), Math.abs(bounds.maxZ))));
+        double planeTolerance = SHAPE_TOLERANCE * size + 8 * Math.ulp(magnitude);
+        for (int i = 0; i < count; i++) {
+            if (v[i].equals(v[(i + 1) % count])) {
+                throw new IllegalArgumentException(
+                        "polygon vertices " + i + " and " + ((i + 1) % count) + " coincide at " + v[i]);
+            }
+        }
         double totalTurn = 0;
         for (int i = 0; i < count; i++) {
             Point a = v[i], b = v[(i + 1) % count], c = v[(i + 2) % count];
-            if (a.equals(b)) {
-                throw new IllegalArgumentException(
-                        "polygon vertices " + i + " and " + ((i + 1) % count) + " coincide at " + a);
-            }
             double distance = (v[i].x - v[0].x) * n.x + (v[i].y - v[0].y) * n.y + (v[i].z - v[0].z) * n.z;
             if (Math.abs(distance) > planeTolerance) {
                 throw new IllegalArgumentException("polygon is not planar: vertex " + i + " " + v[i] + " is "

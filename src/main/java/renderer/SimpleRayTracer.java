@@ -241,7 +241,7 @@ public class SimpleRayTracer extends RayTracerBase {
             Double3 kk = k.product(kR);
             boolean weightless = kR.isZero(); // fired only with planning off, to show planning changes nothing
             if (weightless || !kk.lowerThan(minAttenuation)) {
-                Vector reflected = reflect(v, n, nv);
+                Vector reflected = Optics.reflect(v, n, nv);
                 Color c = beam(
                         sp,
                         reflected,
@@ -259,7 +259,7 @@ public class SimpleRayTracer extends RayTracerBase {
             Double3 kk = k.product(kT);
             boolean weightless = kT.isZero();
             if (weightless || !kk.lowerThan(minAttenuation)) {
-                Vector refracted = refract(v, n, nv, m.getIndexOfRefraction());
+                Vector refracted = Optics.refract(v, n, nv, m.getIndexOfRefraction());
                 Color c = beam(
                         sp,
                         refracted,
@@ -348,35 +348,5 @@ public class SimpleRayTracer extends RayTracerBase {
         if (rough) ctx.counters.glossy++;
         Point origin = sp.spawnOrigin(direction.x, direction.y, direction.z);
         return trace(new Ray(origin, direction), ctx, path, level, k, maySplit);
-    }
-
-    /** Mirror direction {@code v - 2 (v.n) n}. */
-    static Vector reflect(Vector v, Vector n, double nv) {
-        double f = 2 * nv;
-        return new Vector(v.x - f * n.x, v.y - f * n.y, v.z - f * n.z);
-    }
-
-    /**
-     * Refracted direction by Snell's law for unit {@code v} hitting a surface with outward unit normal {@code n};
-     * entering when {@code v.n < 0}. Beyond the critical angle (and exactly at it) the light is totally
-     * reflected. An index of 1 passes straight through, bit for bit.
-     */
-    static Vector refract(Vector v, Vector n, double nv, double indexOfRefraction) {
-        if (indexOfRefraction == 1) return v;
-        double cosI = -nv;
-        double eta;
-        Vector normal = n;
-        if (cosI > 0) {
-            eta = 1 / indexOfRefraction;
-        } else {
-            eta = indexOfRefraction;
-            cosI = -cosI;
-            normal = n.scale(-1);
-        }
-        double sin2T = eta * eta * Math.max(0, 1 - cosI * cosI);
-        if (sin2T >= 1) return reflect(v, n, nv); // total internal reflection
-        double cosT = Math.sqrt(1 - sin2T);
-        double f = eta * cosI - cosT;
-        return new Vector(eta * v.x + f * normal.x, eta * v.y + f * normal.y, eta * v.z + f * normal.z);
     }
 }
