@@ -1,0 +1,262 @@
+package report;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import javax.imageio.ImageIO;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayCounters;
+
+/**
+ * What accuracy costs in time: for each sampled effect, renders a converged reference, then every variant
+ * (pattern, fixed or adaptive) at every sample count, measuring render time (median of repeats), rays by kind and
+ * the error against the reference. Writes per experiment a CSV table, a log-log chart of error against samples and
+ * against time with fitted convergence slopes, and enlarged crops; and one Markdown report with every table.
+ *
+ * <p>Run: {@code mvn -q compile exec:java -Dexec.mainClass=report.AccuracyReport}; options as
+ * {@code -Dexec.args="--size 160x120 --counts 1,4,16,64,256 --repeats 3 --out images"}.
+ */
+public final class AccuracyReport {
+
+    /** What to run and where to write it. */
+    public record Options(int width, int height, int[] counts, int repeats, Path out, List<Experiment> experiments) {
+        public static Options defaults() {
+            return new Options(160, 120, new int[] {1, 4, 16, 64, 256}, 3, Path.of("images"), standardExperiments());
+        }
+    }
+
+    /** The experiments the report runs by default. */
+    public static List<Experiment> standardExperiments() {
+        return List.of(
+                new AntiAliasingExperiment(),
+                new SoftShadowExperiment(),
+                new DepthOfFieldExperiment(),
+                new GlossyExperiment());
+    }
+
+    private AccuracyReport() {}
+
+    public static void main(String[] args) {
+        Options options = parse(args);
+        List<Measurement> all = run(options, System.out);
+        System.out.println("wrote " + options.out().resolve("accuracy").resolve("report.md") + " (" + all.size()
+                + " measurements)");
+    }
+
+    static Options parse(String[] args) {
+        Options o = Options.defaults();
+        int width = o.width(), height = o.height(), repeats = o.repeats();
+        int[] counts = o.counts();
+        Path out = o.out();
+        for (int i = 0; i < args.length; i++) {
+            String value = i + 1 < args.length ? args[i + 1] : null;
+            switch (args[i]) {
+                case "--size" -> {
+                    String[] wh = require(value, "--size").split("x");
+                    width = Integer.parseInt(wh[0]);
+                    height = Integer.parseInt(wh[1]);
+                    i++;
+                }
+                case "--counts" -> {
+                    counts = Arrays.stream(require(value, "--counts").split(","))
+                            .mapToInt(Integer::parseInt)
+                            .toArray();
+                    i++;
+                }
+                case "--repeats" -> {
+                    repeats = Integer.parseInt(require(value, "--repeats"));
+                    i++;
+                }
+                case "--out" -> {
+                    out = Path.of(require(value, "--out"));
+                    i++;
+                }
+                default ->
+                    throw new IllegalArgumentException("unknown option '" + args[i]
+                            + "'; allowed: --size WxH, --counts n1,n2,..., --repeats N, --out folder");
+            }
+        }
+        if (width < 8 || height < 8 || repeats < 1 || counts.length < 2) {
+            throw new IllegalArgumentException("need a size of at least 8x8, repeats >= 1 and two or more counts");
+        }
+        return new Options(width, height, counts, repeats, out, o.experiments());
+    }
+
+    private static String require(String value, String option) {
+        if (value == null) throw new IllegalArgumentException(option + " needs a value");
+        return value;
+    }
+
+    /** Runs every experiment of {@code options}, writes the outputs, returns all measurements. */
+    public static List<Measurement> run(Options options, java.io.PrintStream log) {
+        int w = options.width(), h = options.height();
+        Path folder = options.out().resolve("accuracy");
+        List<Measurement> all = new ArrayList<>();
+        StringBuilder markdown = new StringBuilder();
+        markdown.append(String.format(
+                Locale.ROOT,
+                "# What accuracy costs%n%nImages %d x %d, %d render thread(s), time = median of %d runs.%n"
+                        + "Error = RMSE over pixels and channels (0..255, clamped as displayed) and the 99th "
+                        + "percentile of the per-pixel error, against a converged reference.%n",
+                w,
+                h,
+                Runtime.getRuntime().availableProcessors(),
+                options.repeats()));
+        for (Experiment experiment : options.experiments()) {
+            log.println("== " + experiment.name());
+            Camera referenceCamera = experiment.reference(w, h).renderImage();
+            ImageWriter reference = referenceCamera.getImage();
+            double referenceSeconds = referenceCamera.getLastStatistics().wallSeconds();
+            writePng(folder.resolve(experiment.slug() + "-reference.png"), reference.toBufferedImage());
+            experiment
+                    .camera(experiment.variants().get(0), options.counts()[1], w, h)
+                    .renderImage(); // warm-up
+            Map<String, List<Measurement>> byVariant = new LinkedHashMap<>();
+            List<Variant> variants = experiment.variants();
+            ImageWriter[][] crops = new ImageWriter[variants.size()][options.counts().length + 1];
+            for (int v = 0; v < variants.size(); v++) {
+                Variant variant = variants.get(v);
+                List<Measurement> series = new ArrayList<>();
+                for (int c = 0; c < options.counts().length; c++) {
+                    int n = options.counts()[c];
+                    Timed t = time(experiment, variant, n, w, h, options.repeats());
+                    ImageError error = ImageError.between(t.image, reference);
+                    RayCounters rays = t.rays;
+                    Measurement m = new Measurement(
+                            experiment.slug(),
+                            variant.label(),
+                            n,
+                            t.seconds,
+                            rays.camera,
+                            rays.shadow,
+                            rays.reflection + rays.refraction,
+                            error.rmse(),
+                            error.p99());
+                    series.add(m);
+                    crops[v][c] = t.image;
+                    log.printf(
+                            Locale.ROOT,
+                            "  %-18s %4d: %7.3f s  rmse %7.3f  p99 %7.3f%n",
+                            variant.label(),
+                            n,
+                            m.seconds(),
+                            m.rmse(),
+                            m.p99());
+                }
+                crops[v][options.counts().length] = reference;
+                byVariant.put(variant.label(), series);
+                all.addAll(series);
+            }
+            write(folder.resolve(experiment.slug() + ".csv"), csv(byVariant));
+            writePng(
+                    options.out().resolve("accuracy-" + experiment.slug() + ".png"),
+                    Charts.convergence(experiment.name(), experiment.sampleUnit(), byVariant));
+            List<String> columns = new ArrayList<>();
+            for (int n : options.counts()) columns.add(n + (n == 1 ? " sample" : " samples"));
+            columns.add("reference");
+            writePng(
+                    options.out().resolve("accuracy-" + experiment.slug() + "-crops.png"),
+                    Crops.grid(variants.stream().map(Variant::label).toList(), columns, crops, experiment.crop()));
+            markdown.append(section(experiment, byVariant, referenceSeconds));
+        }
+        write(folder.resolve("report.md"), markdown.toString());
+        return all;
+    }
+
+    private record Timed(ImageWriter image, double seconds, RayCounters rays) {}
+
+    private static Timed time(Experiment experiment, Variant variant, int samples, int w, int h, int repeats) {
+        double[] seconds = new double[repeats];
+        Camera camera = null;
+        for (int r = 0; r < repeats; r++) {
+            camera = experiment.camera(variant, samples, w, h).renderImage();
+            seconds[r] = camera.getLastStatistics().wallSeconds();
+        }
+        Arrays.sort(seconds);
+        return new Timed(
+                camera.getImage(),
+                seconds[repeats / 2],
+                camera.getLastStatistics().rays());
+    }
+
+    private static String csv(Map<String, List<Measurement>> byVariant) {
+        StringBuilder s = new StringBuilder(Measurement.CSV_HEADER).append('\n');
+        byVariant.values().forEach(list -> list.forEach(m -> s.append(m.csv()).append('\n')));
+        return s.toString();
+    }
+
+    /** The Markdown section of one experiment: the measurements, and the fitted slopes per variant. */
+    static String section(Experiment experiment, Map<String, List<Measurement>> byVariant, double referenceSeconds) {
+        StringBuilder s = new StringBuilder();
+        s.append(String.format(
+                Locale.ROOT,
+                "%n## %s (%s)%n%nReference: %.2f s.%n%n",
+                experiment.name(),
+                experiment.sampleUnit(),
+                referenceSeconds));
+        s.append("| variant | samples | time (s) | rays | RMSE | p99 |\n|---|---:|---:|---:|---:|---:|\n");
+        byVariant
+                .values()
+                .forEach(list -> list.forEach(m -> s.append(String.format(
+                        Locale.ROOT,
+                        "| %s | %d | %.3f | %,d | %.3f | %.3f |%n",
+                        m.variant(),
+                        m.samples(),
+                        m.seconds(),
+                        m.rays(),
+                        m.rmse(),
+                        m.p99()))));
+        s.append("\n| variant | slope vs samples | slope vs time | time to halve the error |\n|---|---:|---:|---:|\n");
+        for (Map.Entry<String, List<Measurement>> e : byVariant.entrySet()) {
+            List<Measurement> m =
+                    e.getValue().subList(1, e.getValue().size()); // every pattern's 1 sample is the centre
+            ConvergenceFit bySamples = ConvergenceFit.of(
+                    m.stream().mapToDouble(Measurement::samples).toArray(),
+                    m.stream().mapToDouble(Measurement::rmse).toArray());
+            ConvergenceFit byTime = ConvergenceFit.of(
+                    m.stream().mapToDouble(Measurement::seconds).toArray(),
+                    m.stream().mapToDouble(Measurement::rmse).toArray());
+            s.append(String.format(
+                    Locale.ROOT,
+                    "| %s | %.2f | %.2f | %.1fx |%n",
+                    e.getKey(),
+                    bySamples.slope(),
+                    byTime.slope(),
+                    byTime.factorToHalveError()));
+        }
+        return s.toString();
+    }
+
+    private static void write(Path file, String text) {
+        try {
+            Files.createDirectories(file.getParent());
+            Path temp = Files.createTempFile(file.getParent(), "." + file.getFileName(), ".tmp");
+            Files.writeString(temp, text, StandardCharsets.UTF_8);
+            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static void writePng(Path file, BufferedImage image) {
+        try {
+            Files.createDirectories(file.getParent());
+            Path temp = Files.createTempFile(file.getParent(), "." + file.getFileName(), ".tmp");
+            ImageIO.write(image, "png", temp.toFile());
+            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
+        }
+    }
+}
