@@ -270,7 +270,7 @@ public final class Camera implements Cloneable {
             if (antiAliasing.isAdaptive() && adaptiveDepth > 0) return adaptive(u, v, pixelSeed, ctx);
             double[] offsets = gridOffsets;
             if (offsets == null) {
-                offsets = ctx.offsets(count);
+                offsets = ctx.pixelOffsets(count);
                 SuperSamplingBlackboard.getSampleOffsets(
                         count,
                         antiAliasing.getShape(),
@@ -296,7 +296,7 @@ public final class Camera implements Cloneable {
                 return rayTracer.traceRay(rayThrough(u, v), ctx, path);
             }
             int count = apertureSampling.getSampleCount();
-            double[] offsets = ctx.innerOffsets(count);
+            double[] offsets = ctx.lensOffsets(count);
             SuperSamplingBlackboard.getSampleOffsets(
                     count,
                     TargetShape.CIRCLE,
