@@ -126,6 +126,19 @@ class TubeTest {
     }
 
     @Test
+    void nearTangentRaysAreClassifiedByTheirExactDistanceFromTheAxis() {
+        // rays along x at height y, in planes across the axis: they cross the unit tube iff |y| < 1
+        for (int k = -4; k <= 4; k++) {
+            double y = 1;
+            for (int i = 0; i < Math.abs(k); i++) y = k < 0 ? Math.nextDown(y) : Math.nextUp(y);
+            for (double start : new double[] {-5, -1e6}) {
+                int count = tube.findIntersections(ray(start, y, 3, 1, 0, 0)).size();
+                assertEquals(y < 1 ? 2 : 0, count, "y = 1 " + (k < 0 ? "- " : "+ ") + Math.abs(k) + " ulp");
+            }
+        }
+    }
+
+    @Test
     void completeHit() {
         Ray r = ray(-2, 0.6, 4, 1, 0, 0);
         HitRecord hit = new HitRecord();
