@@ -253,6 +253,33 @@ class MeshTest {
     }
 
     @Test
+    void twoTriangleMeshSharedEdgeIsHitOnceAndItsEndsNeverTwice() {
+        // the unit square split along (1,0,0) - (0,1,0)
+        double[] v = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+        int[] f = {0, 1, 3, 1, 2, 3};
+        Vector[] directions = {
+            new Vector(0, 0, -1),
+            new Vector(0, 0, 1),
+            new Vector(1, 1, 1),
+            new Vector(-1, -2, -2),
+            new Vector(0.3, -0.7, 1.1),
+            new Vector(-0.0, 0.0, 1)
+        };
+        for (Vector d : directions) {
+            for (double s : new double[] {0.5, 0.25, 0.9}) {
+                Point onEdge = new Point(1 - s, s, 0);
+                Ray ray = new Ray(onEdge.add(d.normalize().scale(-3)), d);
+                assertEquals(1, trianglesHit(v, f, ray), "shared edge at " + onEdge + " along " + d);
+            }
+            // the ends of the shared edge lie on the mesh's open outline: hit by at most one triangle, never two
+            for (Point end : new Point[] {new Point(1, 0, 0), new Point(0, 1, 0)}) {
+                Ray ray = TriangleTest.through(end, d);
+                assertTrue(trianglesHit(v, f, ray) <= 1, "end " + end + " along " + d);
+            }
+        }
+    }
+
+    @Test
     void openMeshFanAroundAnInteriorVertexIsHitOnce() {
         // six triangles around (0,0,0) in the plane z = 0: a ray through the centre hits exactly one of them
         double[] v = new double[3 * 7];
