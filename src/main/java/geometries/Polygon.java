@@ -106,6 +106,13 @@ public class Polygon extends Geometry {
             }
         }
         double totalTurn = 0;
+        // Coincident neighbours first: the turn test below needs non-zero edges on both sides of each vertex.
+        for (int i = 0; i < count; i++) {
+            if (v[i].equals(v[(i + 1) % count])) {
+                throw new IllegalArgumentException(
+                        "polygon vertices " + i + " and " + ((i + 1) % count) + " coincide at " + v[i]);
+            }
+        }
         for (int i = 0; i < count; i++) {
             Point a = v[i], b = v[(i + 1) % count], c = v[(i + 2) % count];
             double distance = (v[i].x - v[0].x) * n.x + (v[i].y - v[0].y) * n.y + (v[i].z - v[0].z) * n.z;
@@ -125,6 +132,12 @@ public class Polygon extends Geometry {
             if (Math.abs(sin) <= SHAPE_TOLERANCE * scale && cos < 0) {
                 throw new IllegalArgumentException(
                         "polygon touches itself: it doubles back at vertex " + ((i + 1) % count) + " " + b);
+            }
+            if (Math.abs(sin) <= SHAPE_TOLERANCE * scale) {
+                // A vertex on the side between its neighbours makes a zero-area fan triangle and turns part of the
+                // outline into a fan diagonal (shared edge), which rays through the outline would then hit.
+                throw new IllegalArgumentException("polygon vertex " + ((i + 1) % count) + " " + b
+                        + " lies on the side between its neighbours " + a + " and " + c);
             }
             totalTurn += Math.atan2(Math.max(sin, 0), cos);
         }

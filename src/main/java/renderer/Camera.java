@@ -97,8 +97,9 @@ public final class Camera implements Cloneable {
      * view direction.
      */
     public Camera setDepthOfField(double focalDistance, double apertureRadius) {
-        this.focalDistance = Util.requirePositive(focalDistance, "focal distance");
+        Util.requirePositive(focalDistance, "focal distance");
         this.apertureRadius = Util.requireNonNegative(apertureRadius, "aperture radius");
+        this.focalDistance = focalDistance;
         return this;
     }
 
@@ -463,8 +464,9 @@ public final class Camera implements Cloneable {
 
         /** View-plane width and height, in scene units. */
         public Builder setVpSize(double width, double height) {
-            camera.vpWidth = Util.requirePositive(width, "view plane width");
+            Util.requirePositive(width, "view plane width");
             camera.vpHeight = Util.requirePositive(height, "view plane height");
+            camera.vpWidth = width;
             return this;
         }
 

@@ -48,7 +48,9 @@ public class Scene {
 
     /** Adds lights and returns this scene. */
     public Scene addLights(LightSource... lights) {
-        for (int i = 0; i < lights.length; i++) this.lights.add(Util.requireNonNull(lights[i], "light " + i));
+        Util.requireNonNull(lights, "lights");
+        for (int i = 0; i < lights.length; i++) Util.requireNonNull(lights[i], "light " + i);
+        this.lights.addAll(java.util.Arrays.asList(lights));
         return this;
     }
 

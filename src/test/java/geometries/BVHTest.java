@@ -1,0 +1,108 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/** Structural tests of {@link BVH}: every primitive once, boxes nest, leaves bounded, depth bounded. */
+class BVHTest {
+
+    @Test
+    void buildParametersAreValidated() {
+        double[] one = {0, 0, 0, 1, 1, 1};
+        Hits.assertRejected(() -> BVH.build(one, 1, 4), "bins", "1");
+        Hits.assertRejected(() -> BVH.build(one, 257, 4), "bins", "257");
+        Hits.assertRejected(() -> BVH.build(one, 16, 0), "maxLeafSize", "0");
+        Hits.assertRejected(() -> BVH.build(one, 16, 65), "maxLeafSize", "65");
+        Hits.assertRejected(() -> BVH.build(new double[] {0, 0, 0, 1, 1}, 16, 4), "6 values");
+        assertThrows(IllegalArgumentException.class, () -> BVH.build(one, 16, 4).node(1));
+    }
+
+    @Test
+    void singlePrimitiveIsOneLeaf() {
+        BVH bvh = BVH.build(new double[] {0, 0, 0, 1, 2, 3}, 16, 4);
+        assertEquals(1, bvh.nodeCount());
+        assertEquals(1, bvh.leafCount());
+        assertEquals(0, bvh.depth());
+        BVHNode root = bvh.node(0);
+        assertTrue(root.isLeaf());
+        assertEquals(new BoundingBox(0, 0, 0, 1, 2, 3), root.bounds());
+        assertEquals(0, bvh.primitiveAt(0));
+    }
+
+    static Stream<Arguments> cases() {
+        return LongStream.range(0, 8)
+                .mapToObj(i -> Arguments.of(0xB7L + 13L * i, (int) (1 + i * i * 37), (int) (1 + i % 4)));
+    }
+
+    @ParameterizedTest(name = "seed {0}, {1} boxes, leaves <= {2}")
+    @MethodSource("cases")
+    void structureIsConsistent(long seed, int n, int maxLeaf) {
+        Random random = new Random(seed);
+        double[] boxes = new double[6 * n];
+        for (int i = 0; i < n; i++) {
+            // some clusters of identical boxes (coincident centroids) among spread ones
+            boolean clustered = random.nextInt(5) == 0;
+            for (int a = 0; a < 3; a++) {
+                double lo = clustered ? 7 : random.nextGaussian() * 50;
+                boxes[6 * i + a] = lo;
+                boxes[6 * i + 3 + a] = lo + (clustered ? 1 : random.nextDouble() * 5);
+            }
+        }
+        BVH bvh = BVH.build(boxes, 16, maxLeaf);
+        assertEquals(n, bvh.primitiveCount());
+        boolean[] seen = new boolean[n];
+        int[] leafPrimitives = {0};
+        check(bvh, 0, boxes, seen, leafPrimitives, maxLeaf, 0);
+        assertEquals(n, leafPrimitives[0], "leaves hold every primitive once");
+        for (int i = 0; i < n; i++) assertTrue(seen[i], "primitive " + i + " in a leaf (seed " + seed + ")");
+        assertTrue(bvh.depth() <= BVH.MAX_DEPTH);
+        assertEquals(bvh.nodeCount(), 2 * bvh.leafCount() - 1, "a binary tree");
+    }
+
+    /** Walks the subtree at {@code node}; returns the index after it (depth-first layout). */
+    private static int check(BVH bvh, int node, double[] boxes, boolean[] seen, int[] count, int maxLeaf, int depth) {
+        BVHNode n = bvh.node(node);
+        BoundingBox b = n.bounds();
+        if (n.isLeaf()) {
+            int centroidsDiffer = 0;
+            for (int k = n.firstPrimitive(); k < n.firstPrimitive() + n.primitiveCount(); k++) {
+                int p = bvh.primitiveAt(k);
+                assertTrue(!seen[p], "primitive " + p + " in two leaves");
+                seen[p] = true;
+                count[0]++;
+                assertTrue(
+                        b.minX <= boxes[6 * p]
+                                && b.minY <= boxes[6 * p + 1]
+                                && b.minZ <= boxes[6 * p + 2]
+                                && b.maxX >= boxes[6 * p + 3]
+                                && b.maxY >= boxes[6 * p + 4]
+                                && b.maxZ >= boxes[6 * p + 5],
+                        "leaf box holds primitive " + p);
+                if (boxes[6 * p] != boxes[6 * bvh.primitiveAt(n.firstPrimitive())]) centroidsDiffer++;
+            }
+            // bigger leaves only where the SAH says so and never beyond the limit unless centroids coincide
+            assertTrue(
+                    n.primitiveCount() <= maxLeaf || centroidsDiffer == 0 || depth == BVH.MAX_DEPTH,
+                    "leaf of " + n.primitiveCount());
+            return node + 1;
+        }
+        assertTrue(n.axis() >= 0 && n.axis() <= 2);
+        // first child follows its parent; the second child's index is stored
+        int afterFirst = check(bvh, node + 1, boxes, seen, count, maxLeaf, depth + 1);
+        assertEquals(afterFirst, n.secondChild(), "second child after the first subtree");
+        for (int child : new int[] {node + 1, n.secondChild()}) {
+            BoundingBox c = bvh.node(child).bounds();
+            assertEquals(b, b.union(c), "parent box holds child " + child);
+        }
+        return check(bvh, n.secondChild(), boxes, seen, count, maxLeaf, depth + 1);
+    }
+}
