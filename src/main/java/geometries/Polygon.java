@@ -99,12 +99,6 @@ public class Polygon extends Geometry {
                         Math.max(Math.abs(bounds.minY), Math.abs(bounds.maxY)),
                         Math.max(Math.abs(bounds.minZ), Math.abs(bounds.maxZ))));
         double planeTolerance = SHAPE_TOLERANCE * size + 8 * Math.ulp(magnitude);
-        for (int i = 0; i < count; i++) {
-            if (v[i].equals(v[(i + 1) % count])) {
-                throw new IllegalArgumentException(
-                        "polygon vertices " + i + " and " + ((i + 1) % count) + " coincide at " + v[i]);
-            }
-        }
         double totalTurn = 0;
         // Coincident neighbours first: the turn test below needs non-zero edges on both sides of each vertex.
         for (int i = 0; i < count; i++) {

@@ -48,27 +48,6 @@ public final class TraceContext {
         return glossyOffsets;
     }
 
-    /**
-     * The camera's own buffers for the pixel and lens sample offsets. The camera traces rays while it walks
-     * through these, and the tracer refills {@link #offsets} and {@link #innerOffsets} below it (soft shadows,
-     * glossy beams), so the camera must not share them.
-     */
-    private double[] pixelOffsets = new double[2 * 81];
-
-    private double[] lensOffsets = new double[2 * 81];
-
-    /** The camera's buffer for {@code count} pixel (anti-aliasing) sample offsets. */
-    double[] pixelOffsets(int count) {
-        if (pixelOffsets.length < 2 * count) pixelOffsets = new double[2 * count];
-        return pixelOffsets;
-    }
-
-    /** The camera's buffer for {@code count} lens (depth of field) sample offsets. */
-    double[] lensOffsets(int count) {
-        if (lensOffsets.length < 2 * count) lensOffsets = new double[2 * count];
-        return lensOffsets;
-    }
-
     /** BVH nodes visited and primitives tested, over both records. */
     public long nodeVisits() {
         return hit.nodeVisits + shadowHit.nodeVisits;

@@ -176,24 +176,24 @@ class ReflectionRefractionRenderTest {
         Vector n = Vector.AXIS_Z;
         // entering glass at 45 degrees: sin t = sin 45 / 1.5
         Vector v = new Vector(1, 0, -1).normalize();
-        Vector t = SimpleRayTracer.refract(v, n, v.dotProduct(n), 1.5);
+        Vector t = Optics.refract(v, n, v.dotProduct(n), 1.5);
         assertEquals(Math.sin(Math.PI / 4) / 1.5, t.x / t.length(), 1e-12, "sin of the refracted angle");
         assertTrue(t.z < 0, "continues into the glass");
         // leaving glass at 30 degrees: sin t = 1.5 sin 30 = 0.75
         Vector out = new Vector(Math.sin(Math.PI / 6), 0, Math.cos(Math.PI / 6));
-        Vector t2 = SimpleRayTracer.refract(out, n, out.dotProduct(n), 1.5);
+        Vector t2 = Optics.refract(out, n, out.dotProduct(n), 1.5);
         assertEquals(0.75, t2.x / t2.length(), 1e-12);
         assertTrue(t2.z > 0);
         // leaving glass at 60 degrees: 1.5 sin 60 > 1, total internal reflection
         Vector steep = new Vector(Math.sin(Math.PI / 3), 0, Math.cos(Math.PI / 3));
-        Vector tir = SimpleRayTracer.refract(steep, n, steep.dotProduct(n), 1.5);
+        Vector tir = Optics.refract(steep, n, steep.dotProduct(n), 1.5);
         Vector mirrored = new Vector(steep.x, 0, -steep.z);
         assertEquals(mirrored.x, tir.x / tir.length(), 1e-12);
         assertEquals(mirrored.z, tir.z / tir.length(), 1e-12);
         // index 1 goes straight through, bit for bit
-        assertEquals(v, SimpleRayTracer.refract(v, n, v.dotProduct(n), 1.0));
+        assertEquals(v, Optics.refract(v, n, v.dotProduct(n), 1.0));
         // reflection
-        Vector r = SimpleRayTracer.reflect(v, n, v.dotProduct(n));
+        Vector r = Optics.reflect(v, n, v.dotProduct(n));
         assertEquals(v.x, r.x, 1e-15);
         assertEquals(-v.z, r.z, 1e-15);
     }
