@@ -59,7 +59,11 @@ public final class ObjReader {
 
     /** Reads an OBJ file; the path as given names it in messages. */
     public static ObjMesh read(Path path) throws ObjFormatException {
-        String name = path.toString();
+        return read(path, path.toString());
+    }
+
+    /** Reads an OBJ file that messages call {@code name}. */
+    public static ObjMesh read(Path path, String name) throws ObjFormatException {
         if (Files.isDirectory(path)) throw new ObjFormatException(name, 0, "is a folder, not an OBJ file");
         if (Files.exists(path) && !Files.isRegularFile(path)) {
             throw new ObjFormatException(name, 0, "is not a regular file");
