@@ -9,7 +9,7 @@ import java.nio.charset.StandardCharsets;
  * {@code src/test/resources/obj/ObjReaderFuzzTestInputs/}; {@code JAZZER_FUZZ=1} fuzzes (see docs/CLI.md).
  */
 class ObjReaderFuzzTest {
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "5m")
     void objText(byte[] data) {
         try {
             ObjMesh mesh = ObjReader.parse("fuzz.obj", new String(data, StandardCharsets.ISO_8859_1));
