@@ -152,7 +152,7 @@ final class SceneBuilder {
             if (target.equals(location)) {
                 throw fail(at.field("lookAt"), "the camera cannot look at its own location " + location);
             }
-            to = target.subtract(location);
+            to = core(at.field("lookAt"), () -> target.subtract(location)); // may overflow for huge coordinates
         } else {
             to = vector(at.field("direction"), c.direction());
         }
@@ -165,6 +165,7 @@ final class SceneBuilder {
         double width = required(at, "vpWidth", c.vpWidth());
         double height = required(at, "vpHeight", c.vpHeight());
         core(at.field("vpDistance"), () -> b.setVpDistance(distance));
+        // Width first with a stand-in height, so an error names the field that is wrong.
         core(at.field("vpWidth"), () -> b.setVpSize(width, 1));
         core(at.field("vpHeight"), () -> b.setVpSize(width, height));
         DepthOfFieldDocument dof = c.depthOfField();
@@ -234,12 +235,17 @@ final class SceneBuilder {
 
     private AmbientLight ambient(JsonPath at, AmbientDocument a) throws SceneFileException {
         Color color = color(at.field("color"), required(at, "color", a.color()));
-        Double3 kA = a.kA() == null ? Double3.ONE : coefficient(a.kA());
+        Double3 kA = a.kA() == null ? Double3.ONE : coefficient(at.field("kA"), a.kA());
         return core(at.field("kA"), () -> new AmbientLight(color, kA));
     }
 
     private LightSource light(JsonPath at, LightDocument light) throws SceneFileException {
         if (light == null) throw fail(at, "null is not a light: give an object with a \"type\"");
+        // Values are checked where they are used; this catches what the core rejects of their combination.
+        return core(at, () -> lightSource(at, light));
+    }
+
+    private LightSource lightSource(JsonPath at, LightDocument light) throws SceneFileException {
         if (light instanceof DirectionalLightDocument d) {
             Color color = color(at.field("color"), required(at, "color", d.color()));
             Vector direction = vector(at.field("direction"), required(at, "direction", d.direction()));
@@ -277,12 +283,12 @@ final class SceneBuilder {
     private Material material(JsonPath at, MaterialDocument m) throws SceneFileException {
         if (m == null) throw fail(at, "null is not a material: give an object such as {\"kD\": 0.5}");
         Material material = new Material();
-        if (m.kA() != null) core(at.field("kA"), () -> material.setKa(coefficient(m.kA())));
-        if (m.kD() != null) core(at.field("kD"), () -> material.setKd(coefficient(m.kD())));
-        if (m.kS() != null) core(at.field("kS"), () -> material.setKs(coefficient(m.kS())));
+        if (m.kA() != null) material.setKa(coefficient(at.field("kA"), m.kA()));
+        if (m.kD() != null) material.setKd(coefficient(at.field("kD"), m.kD()));
+        if (m.kS() != null) material.setKs(coefficient(at.field("kS"), m.kS()));
         if (m.shininess() != null) core(at.field("shininess"), () -> material.setShininess(m.shininess()));
-        if (m.kR() != null) core(at.field("kR"), () -> material.setKr(coefficient(m.kR())));
-        if (m.kT() != null) core(at.field("kT"), () -> material.setKt(coefficient(m.kT())));
+        if (m.kR() != null) material.setKr(coefficient(at.field("kR"), m.kR()));
+        if (m.kT() != null) material.setKt(coefficient(at.field("kT"), m.kT()));
         if (m.indexOfRefraction() != null) {
             core(at.field("indexOfRefraction"), () -> material.setIndexOfRefraction(m.indexOfRefraction()));
         }
@@ -290,7 +296,12 @@ final class SceneBuilder {
         return material;
     }
 
-    private static Double3 coefficient(Coefficient c) {
+    /** A coefficient, checked here because the core's range message would quote Double.MAX_VALUE. */
+    private Double3 coefficient(JsonPath at, Coefficient c) throws SceneFileException {
+        if (c.r() < 0 || c.g() < 0 || c.b() < 0) {
+            String value = c.isUniform() ? String.valueOf(c.r()) : "[" + c.r() + ", " + c.g() + ", " + c.b() + "]";
+            throw fail(at, "coefficients must be zero or positive (a number or [r, g, b]), but was " + value);
+        }
         return new Double3(c.r(), c.g(), c.b());
     }
 
@@ -307,7 +318,7 @@ final class SceneBuilder {
         if (g instanceof GroupDocument group) {
             return group(at.field("geometries"), required(at, "geometries", group.geometries()));
         }
-        Geometry geometry = shape(at, g);
+        Geometry geometry = core(at, () -> shape(at, g));
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
@@ -465,10 +476,10 @@ final class SceneBuilder {
         }
     }
 
-    /** A constructor or setter of the core. */
+    /** A constructor or setter of the core (or a step of the builder that calls some). */
     @FunctionalInterface
     private interface CoreCall<T> {
-        T get();
+        T get() throws SceneFileException;
     }
 
     private SceneFileException fail(JsonPath at, String problem) {

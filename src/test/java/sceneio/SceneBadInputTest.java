@@ -208,7 +208,24 @@ class SceneBadInputTest {
                 .getMessage()
                 .contains("sphere radius must be positive and finite, but was Infinity"));
         assertTrue(error("{\"a\": 1, \"a\": 2}").getMessage().contains("Duplicate field 'a'"));
+        // Finite values whose difference overflows are still reported at their place.
+        assertTrue(
+                error(VALID.replace("[0, -10, 0], \"lookAt\": [0, 0, 0]", "[-1e308, 0, 0], \"lookAt\": [1e308, 0, 0]"))
+                        .getMessage()
+                        .contains("$.camera.lookAt: coordinates must be finite"));
+        assertTrue(error(VALID.replace("\"radius\": 1}", "\"radius\": 1e300}"))
+                .getMessage()
+                .contains("$.geometries[0]"));
         assertTrue(error(VALID + "{}").getMessage().contains("a scene file holds exactly one JSON object"));
+    }
+
+    @Test
+    void oddMaterialNamesAreQuotedInThePathAndStillLocated() {
+        String json = VALID.replace("\"render\"", "\"materials\": {\"a/b~c d\": {\"kD\": -1}},\n  \"render\"");
+        assertMessage(
+                "bad.json:4:29: $.materials['a/b~c d'].kD: coefficients must be zero or positive (a number or"
+                        + " [r, g, b]), but was -1.0",
+                error(json));
     }
 
     @Test
