@@ -21,6 +21,8 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /** The command line as a user runs it: exit codes, output files, messages, and no partial or stale images. */
 class RaytracerCliTest {
@@ -253,14 +255,23 @@ class RaytracerCliTest {
         }
     }
 
-    @Test
-    void theShowcaseSceneFileRenders() throws IOException {
-        Path png = dir.resolve("showcase.png");
-        // The README main job renders this file at full size; a thumbnail proves the file and the command work.
+    static List<String> shippedScenes() throws IOException {
+        try (Stream<Path> files = Files.list(Path.of("scenes"))) {
+            return files.map(Path::toString)
+                    .filter(f -> f.endsWith(".json"))
+                    .sorted()
+                    .toList();
+        }
+    }
+
+    @ParameterizedTest
+    @MethodSource("shippedScenes")
+    void everyShippedSceneRenders(String scene) throws IOException {
+        Path png = dir.resolve("thumbnail.png");
+        // README's main job renders showcase.json at full size; a thumbnail proves each file and the command work.
         assertEquals(
-                0,
-                run("render", "scenes/showcase.json", "-o", png.toString(), "--width", "32", "--samples", "1", "-q"),
-                err.toString());
-        assertEquals(20, read(png).getHeight());
+                0, run("render", scene, "-o", png.toString(), "--width", "32", "--samples", "1", "-q"), err.toString());
+        assertEquals(32, read(png).getWidth());
+        assertEquals("", out.toString(), "quiet");
     }
 }

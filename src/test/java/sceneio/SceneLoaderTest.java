@@ -156,6 +156,17 @@ class SceneLoaderTest {
     }
 
     @Test
+    void theAnnotatedExampleInTheDocsLoads() throws Exception {
+        String doc = Files.readString(Path.of("docs/SCENE-FORMAT.md"));
+        int start = doc.indexOf("```jsonc\n") + "```jsonc\n".length();
+        String example = doc.substring(start, doc.indexOf("```", start));
+        LoadedScene loaded = SceneLoader.load(example, "docs/SCENE-FORMAT.md", Path.of("scenes"));
+        assertEquals("demo", loaded.scene().getName());
+        assertEquals(8, loaded.scene().geometries.getMembers().size());
+        assertEquals(3, loaded.scene().lights.size());
+    }
+
+    @Test
     void enumsAreReadInAnyCaseAndCommentsAreAllowed() throws Exception {
         LoadedScene loaded = SceneLoader.load("""
                 // a comment
