@@ -144,7 +144,7 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /** The command-line options written into the document, so the loader validates them like the file. */
-    private SceneDocument applyOverrides(SceneDocument d) throws BadInputException {
+    private SceneDocument applyOverrides(SceneDocument d) {
         RenderDocument r = d.render();
         if (r == null) return d; // the loader reports the missing section
         if (threads != null) r = r.withThreads(threads);
