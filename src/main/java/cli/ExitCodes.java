@@ -1,0 +1,13 @@
+package cli;
+
+/** The exit codes of every subcommand, so scripts can tell a bad scene from a failed render. */
+public final class ExitCodes {
+    /** The command did what was asked. */
+    public static final int OK = 0;
+    /** The input was fine but rendering or writing the result failed. */
+    public static final int RENDER_FAILED = 1;
+    /** Bad input: a scene file, an option or an output path that cannot be used (nothing was rendered). */
+    public static final int BAD_INPUT = 2;
+
+    private ExitCodes() {}
+}

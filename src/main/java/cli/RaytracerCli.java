@@ -1,0 +1,66 @@
+package cli;
+
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import sceneio.SceneFileException;
+
+/**
+ * The {@code raytracer} command line: {@code raytracer render scene.json -o out.png}, {@code --help},
+ * {@code --version}. Exit codes are in {@link ExitCodes}: 0 success, 1 render failure, 2 bad input.
+ *
+ * <p>To add a subcommand (e.g. {@code benchmark}, {@code report}), write a picocli {@code @Command} class that
+ * implements {@code Callable<Integer>} and add it to {@code subcommands} below. Throw {@link SceneFileException}
+ * or {@link BadInputException} for bad input; anything else is reported as a failure (exit 1).
+ */
+@Command(
+        name = "raytracer",
+        mixinStandardHelpOptions = true,
+        versionProvider = VersionProvider.class,
+        description = "Renders JSON scene files (docs/SCENE-FORMAT.md) into PNG images.",
+        subcommands = {RenderCommand.class, CommandLine.HelpCommand.class},
+        exitCodeOnInvalidInput = ExitCodes.BAD_INPUT,
+        exitCodeOnExecutionException = ExitCodes.RENDER_FAILED)
+public final class RaytracerCli implements Runnable {
+    @CommandLine.Spec
+    private CommandLine.Model.CommandSpec spec;
+
+    /** Without a subcommand: the usage, and exit code 2 (nothing was done). */
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required, e.g. render");
+    }
+
+    public static void main(String[] args) {
+        int code = run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true));
+        // Exit only on failure: on success, returning lets `mvn exec:java` finish normally.
+        if (code != ExitCodes.OK) System.exit(code);
+    }
+
+    /** Runs the command line and returns its exit code; {@code out} and {@code err} receive its output. */
+    public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        return commandLine(out, err).execute(args);
+    }
+
+    /** The configured command line, for tests and for embedding. */
+    public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
+        CommandLine cl = new CommandLine(new RaytracerCli());
+        cl.setOut(out);
+        cl.setErr(err);
+        cl.setCaseInsensitiveEnumValuesAllowed(true);
+        cl.setExecutionExceptionHandler((e, commandLine, parseResult) -> {
+            PrintWriter w = commandLine.getErr();
+            if (e instanceof SceneFileException || e instanceof BadInputException) {
+                w.println("error: " + e.getMessage());
+                w.flush();
+                return ExitCodes.BAD_INPUT;
+            }
+            w.println("render failed: " + e);
+            StackTraceElement[] trace = e.getStackTrace();
+            for (int i = 0; i < Math.min(trace.length, 8); i++) w.println("    at " + trace[i]);
+            w.flush();
+            return ExitCodes.RENDER_FAILED;
+        });
+        return cl;
+    }
+}

@@ -1,0 +1,176 @@
+package cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import renderer.Camera;
+import sceneio.LoadedScene;
+import sceneio.SceneLoader;
+import sceneio.model.CameraDocument;
+import sceneio.model.RenderDocument;
+import sceneio.model.SamplingDocument;
+import sceneio.model.SceneDocument;
+
+/**
+ * {@code raytracer render scene.json [-o out.png] [--threads N] [--bvh on|off] [--samples N] [--width W]
+ * [--height H]}: loads the scene file, applies the overrides, renders with progress on stderr and writes the PNG.
+ *
+ * <p>The image is written only after the whole render succeeded, through a temporary file moved into place; on
+ * any failure no file is written and an existing file at the output path is left untouched (and the message
+ * says so), so an old image is never mistaken for a new result: it keeps its old timestamp.
+ */
+@Command(
+        name = "render",
+        mixinStandardHelpOptions = true,
+        description = "Renders a JSON scene file into a PNG image.",
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {
+            "0:the image was written",
+            "1:the render or writing the image failed",
+            "2:bad input: scene file, option or output path (nothing rendered)"
+        })
+public final class RenderCommand implements Callable<Integer> {
+    /** An on/off option value. */
+    public enum Switch {
+        ON,
+        OFF
+    }
+
+    /** The most anti-aliasing rays per pixel the core's sampling accepts. */
+    private static final int MAX_SAMPLES = 1 << 20;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "<scene.json>", description = "the scene file (docs/SCENE-FORMAT.md)")
+    private Path sceneFile;
+
+    @Option(
+            names = {"-o", "--output"},
+            paramLabel = "<out.png>",
+            description = "the image to write (default: images/<scene name>.png; its folder must exist)")
+    private Path output;
+
+    @Option(
+            names = "--threads",
+            paramLabel = "N",
+            description = "render threads (default: the scene's, else all cores)")
+    private Integer threads;
+
+    @Option(names = "--bvh", paramLabel = "on|off", description = "use the BVH (default: the scene's, else on)")
+    private Switch bvh;
+
+    @Option(names = "--samples", paramLabel = "N", description = "anti-aliasing rays per pixel (1 = off)")
+    private Integer samples;
+
+    @Option(
+            names = "--width",
+            paramLabel = "W",
+            description = "image width; alone, the height follows the scene's aspect ratio")
+    private Integer width;
+
+    @Option(
+            names = "--height",
+            paramLabel = "H",
+            description = "image height; alone, the width follows the scene's aspect ratio")
+    private Integer height;
+
+    @Option(
+            names = "--progress",
+            paramLabel = "auto|bar|lines|none",
+            defaultValue = "auto",
+            description = "progress on stderr: a bar in a terminal, lines otherwise (default: ${DEFAULT-VALUE})")
+    private ProgressMode progress;
+
+    @Option(
+            names = {"-q", "--quiet"},
+            description = "print only errors (no progress, no statistics)")
+    private boolean quiet;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        checkPositive("--threads", threads);
+        checkPositive("--samples", samples);
+        if (samples != null && samples > MAX_SAMPLES) {
+            throw new BadInputException("--samples must be <= " + MAX_SAMPLES + ", but was " + samples);
+        }
+        checkPositive("--width", width);
+        checkPositive("--height", height);
+
+        SceneDocument document = SceneLoader.read(sceneFile);
+        document = applyOverrides(document);
+        LoadedScene loaded = SceneLoader.build(document, sceneFile);
+        for (String warning : loaded.warnings()) err.println("warning: " + warning);
+
+        Path target = output != null
+                ? OutputFile.check(output, false)
+                : OutputFile.check(Path.of("images", loaded.scene().getName() + ".png"), true);
+        boolean existed = Files.exists(target);
+
+        Camera camera = loaded.camera();
+        try (RenderProgress listener = RenderProgress.create(quiet ? ProgressMode.NONE : progress, System.err, err)) {
+            camera.setProgressListener(listener);
+            camera.renderImage();
+        } catch (RuntimeException | Error e) {
+            err.println("render failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            throw e;
+        }
+        try {
+            camera.writeToImage(target);
+        } catch (RuntimeException e) {
+            err.println("writing failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            throw e;
+        }
+        if (!quiet) {
+            out.println("wrote " + target);
+            out.print(camera.getLastStatistics().format());
+            out.flush();
+        }
+        return ExitCodes.OK;
+    }
+
+    private static void checkPositive(String option, Integer value) throws BadInputException {
+        if (value != null && value < 1) {
+            throw new BadInputException(option + " must be >= 1, but was " + value);
+        }
+    }
+
+    /** The command-line options written into the document, so the loader validates them like the file. */
+    private SceneDocument applyOverrides(SceneDocument d) {
+        RenderDocument r = d.render();
+        if (r == null) return d; // the loader reports the missing section
+        if (threads != null) r = r.withThreads(threads);
+        if (bvh != null) r = r.withBvh(bvh == Switch.ON);
+        if (samples != null) {
+            SamplingDocument aa = r.antiAliasing();
+            r = r.withAntiAliasing(
+                    aa == null
+                            ? new SamplingDocument(samples, null, null, null)
+                            : new SamplingDocument(samples, aa.shape(), aa.pattern(), aa.adaptiveThreshold()));
+        }
+        CameraDocument camera = d.camera();
+        if (width != null || height != null) {
+            if (r.width() == null || r.height() == null || r.width() < 1 || r.height() < 1) {
+                return d.withRender(
+                        r.withSize(width != null ? width : r.width(), height != null ? height : r.height()));
+            }
+            double aspect = (double) r.width() / r.height();
+            int w = width != null ? width : (int) Math.max(1, Math.round(height * aspect));
+            int h = height != null ? height : (int) Math.max(1, Math.round(width / aspect));
+            r = r.withSize(w, h);
+            // Both given with another aspect ratio: keep the view plane width and square pixels.
+            if (width != null && height != null && camera != null && camera.vpWidth() != null) {
+                camera = camera.withVpHeight(camera.vpWidth() * h / w);
+            }
+        }
+        return d.withRender(r).withCamera(camera);
+    }
+}

@@ -1,0 +1,323 @@
+package obj;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.Reader;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Reads the geometry of a Wavefront OBJ file: {@code v} (vertices), {@code vn} (normals) and {@code f} (faces,
+ * any polygon, triangulated as a fan from its first corner), with 1-based or negative (counted back from the
+ * latest) indices and {@code #} comments. Other statements ({@code vt}, {@code o}, {@code g}, {@code s},
+ * {@code usemtl}, ...) are skipped with one warning per kind. A malformed {@code v}, {@code vn} or {@code f} line,
+ * a zero or out-of-range index, or a file without faces is an {@link ObjFormatException} naming file:line and
+ * the reason; nothing else escapes.
+ *
+ * <p>Indices must refer to elements defined on earlier lines (as every exporter writes them). Normals are used
+ * only if every face corner has one; a mesh where some corners lack them is flat-shaded (with a warning).
+ */
+public final class ObjReader {
+    /** What the skipped statements are, for the warnings; others are "not supported". */
+    private static final Map<String, String> SKIPPED = Map.of(
+            "vt", "texture coordinates are not used",
+            "vp", "parameter-space vertices are not supported",
+            "o", "object names are not used",
+            "g", "group names are not used",
+            "s", "smoothing groups are not used (normals come from vn)",
+            "usemtl", "OBJ materials are not used (the scene file assigns the material)",
+            "mtllib", "OBJ material libraries are not used (the scene file assigns the material)",
+            "l", "polylines are not supported",
+            "p", "points are not supported");
+
+    private final String file;
+    private final DoubleList vertices = new DoubleList();
+    private final DoubleList normals = new DoubleList();
+    /** Per triangle corner: the vertex index and the normal index (-1 if none), 0-based. */
+    private final IntList cornerVertices = new IntList();
+
+    private final IntList cornerNormals = new IntList();
+    private final Map<String, int[]> skipped = new LinkedHashMap<>();
+    private final List<String> notes = new ArrayList<>();
+    private int textureCoordinates;
+    private int lineNumber;
+
+    private ObjReader(String file) {
+        this.file = file;
+    }
+
+    /** Reads an OBJ file; the path as given names it in messages. */
+    public static ObjMesh read(Path path) throws ObjFormatException {
+        return read(path, path.toString());
+    }
+
+    /** Reads an OBJ file that messages call {@code name}. */
+    public static ObjMesh read(Path path, String name) throws ObjFormatException {
+        if (Files.isDirectory(path)) throw new ObjFormatException(name, 0, "is a folder, not an OBJ file");
+        if (Files.exists(path) && !Files.isRegularFile(path)) {
+            throw new ObjFormatException(name, 0, "is not a regular file");
+        }
+        try (InputStream in = Files.newInputStream(path)) {
+            return read(name, new InputStreamReader(in, StandardCharsets.ISO_8859_1));
+        } catch (NoSuchFileException e) {
+            throw new ObjFormatException(name, 0, "file not found", e);
+        } catch (IOException e) {
+            throw new ObjFormatException(name, 0, "cannot be read: " + e, e);
+        }
+    }
+
+    /**
+     * Reads OBJ text; {@code name} names it in messages. The reader is not closed. Bytes are best read as
+     * ISO-8859-1 (every byte is a character, so no decoding error can occur; OBJ is ASCII).
+     */
+    public static ObjMesh read(String name, Reader text) throws ObjFormatException {
+        ObjReader reader = new ObjReader(name);
+        try {
+            BufferedReader lines = new BufferedReader(text);
+            for (String line = lines.readLine(); line != null; line = lines.readLine()) {
+                reader.lineNumber++;
+                reader.parseLine(line);
+            }
+        } catch (IOException e) {
+            throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
+        }
+        return reader.finish();
+    }
+
+    /** Reads OBJ text held in a string. */
+    public static ObjMesh parse(String name, String text) throws ObjFormatException {
+        return read(name, new StringReader(text));
+    }
+
+    private void parseLine(String raw) throws ObjFormatException {
+        int hash = raw.indexOf('#');
+        String line = (hash >= 0 ? raw.substring(0, hash) : raw).strip();
+        if (line.isEmpty()) return;
+        String[] tokens = line.split("\\s+");
+        String keyword = tokens[0];
+        switch (keyword) {
+            case "v" -> vertex(tokens);
+            case "vn" -> normal(tokens);
+            case "f" -> face(tokens);
+            default -> skip(keyword);
+        }
+    }
+
+    private void vertex(String[] tokens) throws ObjFormatException {
+        int n = tokens.length - 1;
+        // x y z, x y z w (w is a rational weight, irrelevant for polygons) or x y z r g b (vertex colours).
+        if (n != 3 && n != 4 && n != 6) {
+            throw error("'v' needs x y z (optionally w, or r g b), but has " + n + " value" + (n == 1 ? "" : "s"));
+        }
+        for (int i = 1; i <= n; i++) {
+            double value = number(tokens[i], "v");
+            if (i <= 3) vertices.add(value);
+        }
+        if (n > 3) note(n == 4 ? "vertex weights (the 4th 'v' value)" : "vertex colours (values 4 to 6 of 'v')");
+    }
+
+    private void normal(String[] tokens) throws ObjFormatException {
+        int n = tokens.length - 1;
+        if (n != 3) throw error("'vn' needs x y z, but has " + n + " value" + (n == 1 ? "" : "s"));
+        for (int i = 1; i <= 3; i++) normals.add(number(tokens[i], "vn"));
+    }
+
+    private void face(String[] tokens) throws ObjFormatException {
+        int n = tokens.length - 1;
+        if (n < 3) throw error("'f' needs at least 3 corners, but has " + n);
+        int[] v = new int[n];
+        int[] vn = new int[n];
+        for (int i = 0; i < n; i++) {
+            String corner = tokens[i + 1];
+            String[] parts = corner.split("/", -1);
+            if (parts.length > 3 || parts[0].isEmpty()) {
+                throw error("face corner '" + corner + "' must be v, v/vt, v//vn or v/vt/vn");
+            }
+            v[i] = resolve(parts[0], vertices.size() / 3, "vertex", corner);
+            if (parts.length >= 2 && !parts[1].isEmpty()) {
+                // Texture coordinates are not used, but the index must still be well formed.
+                resolve(parts[1], textureCoordinates, "texture coordinate", corner);
+            }
+            vn[i] = parts.length == 3 && !parts[2].isEmpty()
+                    ? resolve(parts[2], normals.size() / 3, "normal", corner)
+                    : -1;
+        }
+        for (int i = 1; i + 1 < n; i++) { // fan from the first corner
+            addCorner(v[0], vn[0]);
+            addCorner(v[i], vn[i]);
+            addCorner(v[i + 1], vn[i + 1]);
+        }
+    }
+
+    private void addCorner(int vertex, int normal) {
+        cornerVertices.add(vertex);
+        cornerNormals.add(normal);
+    }
+
+    /** A 1-based or negative OBJ index as a 0-based index into the {@code count} elements defined so far. */
+    private int resolve(String token, int count, String what, String corner) throws ObjFormatException {
+        int index;
+        try {
+            index = Integer.parseInt(token);
+        } catch (NumberFormatException e) {
+            throw error("face corner '" + corner + "': " + what + " index '" + token + "' is not an integer");
+        }
+        String allowed = count == 0
+                ? "no " + what + " is defined before this line"
+                : "allowed are 1.." + count + ", or -1..-" + count + " counting back from the latest";
+        if (index == 0) {
+            throw error("face corner '" + corner + "': " + what + " index 0 is invalid: OBJ indices start at 1 ("
+                    + allowed + ")");
+        }
+        int resolved = index > 0 ? index - 1 : count + index;
+        if (resolved < 0 || resolved >= count) {
+            throw error("face corner '" + corner + "': " + what + " index " + index + " is out of range: " + count
+                    + " defined before this line (" + allowed + ")");
+        }
+        return resolved;
+    }
+
+    private double number(String token, String keyword) throws ObjFormatException {
+        double value;
+        try {
+            value = Double.parseDouble(token);
+        } catch (NumberFormatException e) {
+            throw error("'" + keyword + "' value '" + token + "' is not a number");
+        }
+        if (!Double.isFinite(value)) {
+            throw error("'" + keyword + "' value '" + token + "' must be a finite number");
+        }
+        return value;
+    }
+
+    private void skip(String keyword) throws ObjFormatException {
+        if (!keyword.matches("[A-Za-z_][A-Za-z0-9_]*")) {
+            throw error("'" + abbreviate(keyword) + "' is not an OBJ statement (a line starts with a keyword such"
+                    + " as v, vn or f)");
+        }
+        if (keyword.equals("vt")) textureCoordinates++;
+        skipped.computeIfAbsent(keyword, k -> new int[] {0, lineNumber})[0]++;
+    }
+
+    /** Records a warning once, however often its cause occurs. */
+    private void note(String what) {
+        String text = what + " are ignored";
+        if (!notes.contains(text)) notes.add(text);
+    }
+
+    private ObjMesh finish() throws ObjFormatException {
+        if (cornerVertices.size() == 0) {
+            throw new ObjFormatException(file, 0, "has no faces ('f' lines): a mesh needs at least one triangle");
+        }
+        List<String> warnings = new ArrayList<>();
+        for (Map.Entry<String, int[]> e : skipped.entrySet()) {
+            int count = e.getValue()[0];
+            warnings.add(file + ": skipped " + count + " '" + e.getKey() + "' statement" + (count == 1 ? "" : "s")
+                    + " (first at line " + e.getValue()[1] + "): "
+                    + SKIPPED.getOrDefault(e.getKey(), "not supported"));
+        }
+        for (String note : notes) warnings.add(file + ": " + note);
+
+        int corners = cornerVertices.size();
+        boolean allNormals = true;
+        for (int i = 0; i < corners && allNormals; i++) {
+            int n = cornerNormals.get(i);
+            allNormals = n >= 0 && !normals.isZero(n);
+        }
+        if (!allNormals) {
+            if (normals.size() > 0) {
+                warnings.add(
+                        file + ": normals ignored (flat shading): some face corners have no normal or a zero" + " one");
+            }
+            return new ObjMesh(vertices.toArray(), cornerVertices.toArray(), null, warnings);
+        }
+        // OBJ indexes positions and normals separately; a mesh has one normal per vertex: one vertex per pair.
+        Map<Long, Integer> pairs = new HashMap<>();
+        DoubleList v = new DoubleList(), n = new DoubleList();
+        int[] indices = new int[corners];
+        for (int i = 0; i < corners; i++) {
+            int vi = cornerVertices.get(i), ni = cornerNormals.get(i);
+            long key = ((long) vi << 32) | ni;
+            Integer index = pairs.get(key);
+            if (index == null) {
+                index = pairs.size();
+                pairs.put(key, index);
+                for (int k = 0; k < 3; k++) {
+                    v.add(vertices.get(3 * vi + k));
+                    n.add(normals.get(3 * ni + k));
+                }
+            }
+            indices[i] = index;
+        }
+        return new ObjMesh(v.toArray(), indices, n.toArray(), warnings);
+    }
+
+    private ObjFormatException error(String reason) {
+        return new ObjFormatException(file, lineNumber, reason);
+    }
+
+    private static String abbreviate(String s) {
+        return s.length() <= 20 ? s : s.substring(0, 20) + "...";
+    }
+
+    /** A growable double array: OBJ files hold millions of values, which boxed lists would triple in size. */
+    private static final class DoubleList {
+        private double[] data = new double[48];
+        private int size;
+
+        void add(double value) {
+            if (size == data.length) data = Arrays.copyOf(data, size * 2);
+            data[size++] = value;
+        }
+
+        double get(int i) {
+            return data[i];
+        }
+
+        boolean isZero(int triple) {
+            return data[3 * triple] == 0 && data[3 * triple + 1] == 0 && data[3 * triple + 2] == 0;
+        }
+
+        int size() {
+            return size;
+        }
+
+        double[] toArray() {
+            return Arrays.copyOf(data, size);
+        }
+    }
+
+    /** A growable int array. */
+    private static final class IntList {
+        private int[] data = new int[48];
+        private int size;
+
+        void add(int value) {
+            if (size == data.length) data = Arrays.copyOf(data, size * 2);
+            data[size++] = value;
+        }
+
+        int get(int i) {
+            return data[i];
+        }
+
+        int size() {
+            return size;
+        }
+
+        int[] toArray() {
+            return Arrays.copyOf(data, size);
+        }
+    }
+}

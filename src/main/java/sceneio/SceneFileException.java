@@ -1,0 +1,65 @@
+package sceneio;
+
+/**
+ * A scene file that cannot be loaded: the only exception the loader throws. It names the file, the place (line
+ * and column when known, and the JSON path) and what is wrong and allowed, in a compiler-like message such as
+ * {@code scenes/a.json:12:19: $.geometries[2].radius: sphere radius must be positive and finite, but was -5}.
+ */
+public final class SceneFileException extends Exception {
+    private final String file;
+    private final int line;
+    private final int column;
+    private final String jsonPath;
+    private final String problem;
+
+    /**
+     * @param file the scene file as the user named it
+     * @param line 1-based line, or 0 if unknown
+     * @param column 1-based column, or 0 if unknown
+     * @param jsonPath where in the document, e.g. {@code $.camera.up}, or null when not inside a value
+     * @param problem what is wrong and what is allowed
+     */
+    public SceneFileException(String file, int line, int column, String jsonPath, String problem, Throwable cause) {
+        super(format(file, line, column, jsonPath, problem), cause);
+        this.file = file;
+        this.line = line;
+        this.column = column;
+        this.jsonPath = jsonPath;
+        this.problem = problem;
+    }
+
+    private static String format(String file, int line, int column, String jsonPath, String problem) {
+        StringBuilder s = new StringBuilder(file);
+        if (line > 0) {
+            s.append(':').append(line);
+            if (column > 0) s.append(':').append(column);
+        }
+        s.append(": ");
+        if (jsonPath != null) s.append(jsonPath).append(": ");
+        return s.append(problem).toString();
+    }
+
+    public String getFile() {
+        return file;
+    }
+
+    /** 1-based line, or 0 if unknown. */
+    public int getLine() {
+        return line;
+    }
+
+    /** 1-based column, or 0 if unknown. */
+    public int getColumn() {
+        return column;
+    }
+
+    /** The JSON path ({@code $.a.b[2]}), or null. */
+    public String getJsonPath() {
+        return jsonPath;
+    }
+
+    /** What is wrong and allowed, without the place. */
+    public String getProblem() {
+        return problem;
+    }
+}

@@ -1,0 +1,56 @@
+package sceneio;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import sceneio.model.SceneDocument;
+
+/**
+ * Writes scene documents as JSON in the format {@link SceneLoader} reads: reading what was written gives an equal
+ * document. Absent (null) fields are left out, coefficients with equal channels are written as one number, and
+ * enum values in lower case.
+ */
+public final class SceneWriter {
+    private SceneWriter() {}
+
+    /** The document as pretty-printed JSON text. */
+    public static String toJson(SceneDocument document) {
+        try {
+            return SceneJson.MAPPER.writeValueAsString(document) + "\n";
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("scene document cannot be written as JSON: " + e.getOriginalMessage(), e);
+        }
+    }
+
+    /** Writes the document to {@code file} through a temporary file, so a failure never leaves half a file. */
+    public static void write(SceneDocument document, Path file) {
+        String json = toJson(document);
+        Path target = file.toAbsolutePath();
+        Path temp = null;
+        try {
+            temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+            Files.writeString(temp, json, StandardCharsets.UTF_8);
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            temp = null;
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write scene file " + target + ": " + e.getMessage(), e);
+        } finally {
+            if (temp != null) {
+                try {
+                    Files.deleteIfExists(temp);
+                } catch (IOException ignored) {
+                    // the original error is the one worth reporting
+                }
+            }
+        }
+    }
+}

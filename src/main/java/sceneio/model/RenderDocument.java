@@ -1,0 +1,60 @@
+package sceneio.model;
+
+import com.fasterxml.jackson.annotation.JsonPropertyOrder;
+import renderer.sampling.SamplingPattern;
+
+/**
+ * How to render: the image size and the render settings. Only width and height are required.
+ *
+ * @param width image width in pixels (required)
+ * @param height image height in pixels (required)
+ * @param antiAliasing camera rays per pixel (default one central ray)
+ * @param threads render threads (default: the available processors)
+ * @param bvh search with the BVH (default true) or by brute force
+ * @param maxLevel deepest recursion of reflection and refraction (default 10)
+ * @param shadowPattern placement of shadow rays on a light's disk (default jittered)
+ * @param adaptiveShadows probe a few shadow rays first (default false)
+ * @param glossySamples rays per glossy reflection or frosted refraction (default 16)
+ */
+@JsonPropertyOrder({
+    "width",
+    "height",
+    "antiAliasing",
+    "threads",
+    "bvh",
+    "maxLevel",
+    "shadowPattern",
+    "adaptiveShadows",
+    "glossySamples"
+})
+public record RenderDocument(
+        Integer width,
+        Integer height,
+        SamplingDocument antiAliasing,
+        Integer threads,
+        Boolean bvh,
+        Integer maxLevel,
+        SamplingPattern shadowPattern,
+        Boolean adaptiveShadows,
+        Integer glossySamples) {
+
+    public RenderDocument withSize(Integer width, Integer height) {
+        return new RenderDocument(
+                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+    }
+
+    public RenderDocument withAntiAliasing(SamplingDocument antiAliasing) {
+        return new RenderDocument(
+                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+    }
+
+    public RenderDocument withThreads(Integer threads) {
+        return new RenderDocument(
+                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+    }
+
+    public RenderDocument withBvh(Boolean bvh) {
+        return new RenderDocument(
+                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+    }
+}

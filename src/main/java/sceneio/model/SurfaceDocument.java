@@ -1,0 +1,10 @@
+package sceneio.model;
+
+/** A geometry with an appearance: every geometry document but a group. */
+public interface SurfaceDocument {
+    /** The material, or null for the default material. */
+    MaterialRef material();
+
+    /** The emission colour, or null for black. */
+    Vec3 emission();
+}
