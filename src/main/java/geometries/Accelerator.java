@@ -49,13 +49,21 @@ public final class Accelerator implements Intersectable {
     private final boolean[] unboundedMayTransmit;
     private final BVH bvh;
     private final double buildSeconds;
+    /** Build phases in seconds: gathering primitives, primitive boxes, the BVH proper, laying out the arrays. */
+    private final double collectSeconds, boxSeconds, bvhSeconds, layoutSeconds;
 
-    private Accelerator(Collector c, boolean useBvh, int bins, int maxLeafSize) {
+    private Accelerator(Collector c, boolean useBvh, int bins, int maxLeafSize, long collectStart) {
         long start = System.nanoTime();
+        collectSeconds = (start - collectStart) * 1e-9;
         c.markSharedOutlineEdges();
         int n = c.count;
         boundedCount = n;
-        bvh = useBvh && n > 0 ? BVH.build(c.boxes(), bins, maxLeafSize) : null;
+        double[] boxes = useBvh && n > 0 ? c.boxes() : null;
+        long boxesDone = System.nanoTime();
+        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize) : null;
+        long bvhDone = System.nanoTime();
+        boxSeconds = (boxesDone - start) * 1e-9;
+        bvhSeconds = (bvhDone - boxesDone) * 1e-9;
         triangles = new double[9 * n];
         sharedEdges = new int[n];
         owners = new Geometry[n];
@@ -80,7 +88,9 @@ public final class Accelerator implements Intersectable {
         for (int j = 0; j < unbounded.length; j++) {
             unboundedMayTransmit[j] = mayTransmit(unbounded[j]);
         }
-        buildSeconds = (System.nanoTime() - start) * 1e-9;
+        long end = System.nanoTime();
+        layoutSeconds = (end - bvhDone) * 1e-9;
+        buildSeconds = (end - collectStart) * 1e-9;
     }
 
     /** Compiles {@code geometry} with a BVH of default settings, or for brute-force search. */
@@ -91,9 +101,10 @@ public final class Accelerator implements Intersectable {
     /** Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build. */
     public static Accelerator build(Intersectable geometry, boolean useBvh, int bins, int maxLeafSize) {
         primitives.Util.requireNonNull(geometry, "geometry");
+        long start = System.nanoTime();
         Collector c = new Collector();
         c.collect(geometry);
-        return new Accelerator(c, useBvh, bins, maxLeafSize);
+        return new Accelerator(c, useBvh, bins, maxLeafSize, start);
     }
 
     /** The BVH, or null in brute-force mode or for a scene without bounded geometry. */
@@ -114,6 +125,17 @@ public final class Accelerator implements Intersectable {
     /** Wall time of compilation including the BVH build, in seconds. */
     public double buildSeconds() {
         return buildSeconds;
+    }
+
+    /** Where the build time went, phase by phase, for benchmark reports. */
+    public String buildBreakdown() {
+        return String.format(
+                java.util.Locale.ROOT,
+                "collect %.3f s, boxes %.3f s, BVH %.3f s, layout %.3f s",
+                collectSeconds,
+                boxSeconds,
+                bvhSeconds,
+                layoutSeconds);
     }
 
     /** Bytes of the flat primitive arrays plus the BVH. */
