@@ -101,6 +101,8 @@ public final class Accelerator implements Intersectable {
     /** Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build. */
     public static Accelerator build(Intersectable geometry, boolean useBvh, int bins, int maxLeafSize) {
         primitives.Util.requireNonNull(geometry, "geometry");
+        // Checked here, not only in BVH.build, so bad settings fail the same way for empty and brute-force scenes.
+        BVH.validateSettings(bins, maxLeafSize);
         long start = System.nanoTime();
         Collector c = new Collector();
         c.collect(geometry);

@@ -46,16 +46,30 @@ public final class BVH {
      * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
+        validateSettings(bins, maxLeafSize);
+        if (primitiveBounds.length % 6 != 0) {
+            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
+        }
+        for (int b = 0; b < primitiveBounds.length; b += 6) {
+            for (int a = 0; a < 3; a++) {
+                // Written so that NaN fails too: a NaN box would poison every box above it.
+                if (!(primitiveBounds[b + a] <= primitiveBounds[b + 3 + a])) {
+                    throw new IllegalArgumentException("primitive " + b / 6 + " has an empty or NaN box on axis " + a
+                            + ": [" + primitiveBounds[b + a] + ", " + primitiveBounds[b + 3 + a] + "]");
+                }
+            }
+        }
+        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
+    }
+
+    /** Throws unless {@code bins} is in [2, 256] and {@code maxLeafSize} in [1, 64]. */
+    static void validateSettings(int bins, int maxLeafSize) {
         if (bins < 2 || bins > 256) {
             throw new IllegalArgumentException("BVH bins must be in [2, 256], but was " + bins);
         }
         if (maxLeafSize < 1 || maxLeafSize > 64) {
             throw new IllegalArgumentException("BVH maxLeafSize must be in [1, 64], but was " + maxLeafSize);
         }
-        if (primitiveBounds.length % 6 != 0) {
-            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
-        }
-        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
     }
 
     public int nodeCount() {
