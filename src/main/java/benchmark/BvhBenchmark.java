@@ -182,19 +182,22 @@ public final class BvhBenchmark {
             int threads = threadCounts[c];
             RayThroughput.trace(bvh, rays, threads); // warm-up
             double[] seconds = new double[runs];
+            double[] cpuSeconds = new double[runs];
             for (int r = 0; r < runs; r++) {
                 RayThroughput.Pass pass = RayThroughput.trace(bvh, rays, threads);
                 seconds[r] = pass.seconds();
+                cpuSeconds[r] = pass.cpuSeconds();
                 if (threads == 1 || stats == null) stats = pass;
             }
             perThread[c] = rays.length / median(seconds) / threads * 1e-6;
             row.append(String.format(Locale.ROOT, " %.2f |", perThread[c]));
             System.out.printf(
                     Locale.ROOT,
-                    "   %-10s %dT: %.2f M rays/s/thread (runs %s)%n",
+                    "   %-10s %dT: %.2f M rays/s/thread, %.2f M rays per CPU second (wall s %s)%n",
                     kind,
                     threads,
                     perThread[c],
+                    rays.length / median(cpuSeconds) * 1e-6,
                     Arrays.toString(Arrays.stream(seconds)
                             .mapToObj(s -> String.format(Locale.ROOT, "%.3f", s))
                             .toArray()));

@@ -2,6 +2,8 @@ package benchmark;
 
 import geometries.Accelerator;
 import geometries.HitRecord;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.concurrent.atomic.AtomicInteger;
 import primitives.Ray;
 
@@ -16,19 +18,28 @@ public final class RayThroughput {
 
     private RayThroughput() {}
 
-    /** The result of one pass: wall time, hits, and BVH statistics summed over the threads. */
-    public record Pass(double seconds, long hits, long nodeVisits, long primitiveTests) {}
+    /**
+     * The result of one pass: wall time, CPU time summed over the threads (on a shared machine it excludes the
+     * time other processes had the cores), hits, and BVH statistics summed over the threads.
+     */
+    public record Pass(double seconds, double cpuSeconds, long hits, long nodeVisits, long primitiveTests) {}
 
     /** Traces all rays once with {@code threads} workers. */
     public static Pass trace(Accelerator accelerator, Ray[] rays, int threads) {
         AtomicInteger next = new AtomicInteger();
         HitRecord[] records = new HitRecord[threads];
         long[] hits = new long[threads];
+        long[] cpuNanos = new long[threads];
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
         Thread[] workers = new Thread[threads];
         for (int w = 0; w < threads; w++) {
             int worker = w;
             records[w] = new HitRecord();
-            workers[w] = new Thread(() -> hits[worker] = traceChunks(accelerator, rays, next, records[worker]));
+            workers[w] = new Thread(() -> {
+                long cpuStart = cpu.getCurrentThreadCpuTime();
+                hits[worker] = traceChunks(accelerator, rays, next, records[worker]);
+                cpuNanos[worker] = cpu.getCurrentThreadCpuTime() - cpuStart;
+            });
         }
         long start = System.nanoTime();
         for (Thread worker : workers) worker.start();
@@ -41,13 +52,14 @@ public final class RayThroughput {
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
-        long totalHits = 0, visits = 0, tests = 0;
+        long totalHits = 0, visits = 0, tests = 0, totalCpu = 0;
         for (int w = 0; w < threads; w++) {
+            totalCpu += cpuNanos[w];
             totalHits += hits[w];
             visits += records[w].nodeVisits;
             tests += records[w].primitiveTests;
         }
-        return new Pass(seconds, totalHits, visits, tests);
+        return new Pass(seconds, totalCpu * 1e-9, totalHits, visits, tests);
     }
 
     private static long traceChunks(Accelerator accelerator, Ray[] rays, AtomicInteger next, HitRecord hit) {

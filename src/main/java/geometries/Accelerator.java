@@ -152,7 +152,7 @@ public final class Accelerator implements Intersectable {
     @Override
     public BoundingBox getBoundingBox() {
         if (unbounded.length > 0 || boundedCount == 0) return null;
-        if (bvh != null) return bvh.node(0).bounds();
+        if (bvh != null) return bvh.bounds();
         throw new UnsupportedOperationException("bounds of a brute-force accelerator are not tracked");
     }
 
@@ -181,44 +181,55 @@ public final class Accelerator implements Intersectable {
                 }
             }
         } else if (boundedCount > 0) {
-            final double[] nb = bvh.nodeBounds;
-            final int[] nd = bvh.nodeData;
+            final float[] nodes = bvh.nodes;
             final int[] stack = hit.stack;
-            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            final double[] stackEntry = hit.stackEntry;
+            final int signs = directionSigns(ray);
+            long visits = 1;
             int sp = 0;
-            int node = 0;
-            long visits = 0;
-            while (true) {
-                visits++;
-                if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
-                    int info = nd[2 * node + 1];
-                    if (info > 0) {
-                        int first = nd[2 * node];
-                        for (int k = first, end = first + info; k < end; k++) {
-                            tests++;
-                            if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
-                                tMax = hit.t;
-                                tieLimit = Math.nextUp(tMax);
-                                best = ids[k];
-                            }
-                        }
-                        if (sp == 0) break;
-                        node = stack[--sp];
-                    } else {
-                        int axis = -1 - info;
-                        boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
-                        // Visit the nearer child first: with a negative direction that is the second child.
-                        if (negative) {
-                            stack[sp++] = node + 1;
-                            node = nd[2 * node];
-                        } else {
-                            stack[sp++] = nd[2 * node];
-                            node = node + 1;
+            int link = bvh.rootLink, count = bvh.rootCount;
+            boolean more = entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < MISS;
+            while (more) {
+                if (count > 0) {
+                    for (int k = link, end = link + count; k < end; k++) {
+                        tests++;
+                        if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                            tMax = hit.t;
+                            tieLimit = Math.nextUp(tMax);
+                            best = ids[k];
                         }
                     }
                 } else {
-                    if (sp == 0) break;
-                    node = stack[--sp];
+                    // Both children's boxes come with this node: test both, go to the nearer, postpone the other.
+                    int o = BVH.NODE_STRIDE * link;
+                    visits += 2;
+                    double entry0 = entry(nodes, o, ray, signs, tMin, tMax);
+                    double entry1 = entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                    // Plain branches, not index arithmetic: for coherent rays they predict well, and the CPU
+                    // then fetches the next node before the box tests have finished.
+                    if (entry0 <= entry1) {
+                        if (entry0 < MISS) {
+                            if (entry1 < MISS) sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK + 2, entry1);
+                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT]);
+                            continue;
+                        }
+                    } else if (entry1 < MISS) {
+                        if (entry0 < MISS) sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK, entry0);
+                        link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2]);
+                        count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2]);
+                        continue;
+                    }
+                }
+                // Resume with the nearest postponed child the closest hit so far has not put out of reach.
+                more = false;
+                while (sp > 0) {
+                    if (stackEntry[--sp] <= tMax) {
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
+                        more = true;
+                        break;
+                    }
                 }
             }
             hit.nodeVisits += visits;
@@ -242,33 +253,68 @@ public final class Accelerator implements Intersectable {
         return false;
     }
 
-    /** The slab test against node bounds, conservative on both ends (see {@link BoundingBox}). */
-    private static boolean hitsNode(double[] nb, int b, Ray ray, double tMin, double tMax) {
-        double t0 = (nb[b] - ray.ox) * ray.invDx;
-        double t1 = (nb[b + 3] - ray.ox) * ray.invDx;
-        double near = t0 < t1 ? t0 : t1;
-        double far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        if (tMin > tMax) return false;
-        t0 = (nb[b + 1] - ray.oy) * ray.invDy;
-        t1 = (nb[b + 4] - ray.oy) * ray.invDy;
-        near = t0 < t1 ? t0 : t1;
-        far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        if (tMin > tMax) return false;
-        t0 = (nb[b + 2] - ray.oz) * ray.invDz;
-        t1 = (nb[b + 5] - ray.oz) * ray.invDz;
-        near = t0 < t1 ? t0 : t1;
-        far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        return tMin <= tMax;
+    /** Postpones the child whose link and count are at {@code child}; returns the new stack size. */
+    private static int push(int[] stack, double[] stackEntry, int sp, float[] nodes, int child, double entry) {
+        stack[2 * sp] = Float.floatToRawIntBits(nodes[child]);
+        stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[child + 1]);
+        stackEntry[sp] = entry;
+        return sp + 1;
     }
+
+    /**
+     * Bit a is set when the ray runs toward negative axis a (reciprocal direction below zero, -0 included), and
+     * {@link #FINITE_RECIPROCALS} when no direction component is zero or subnormal.
+     */
+    private static int directionSigns(Ray ray) {
+        boolean finite = Double.isFinite(ray.invDx) && Double.isFinite(ray.invDy) && Double.isFinite(ray.invDz);
+        return (ray.invDx < 0 ? 1 : 0)
+                | (ray.invDy < 0 ? 2 : 0)
+                | (ray.invDz < 0 ? 4 : 0)
+                | (finite ? FINITE_RECIPROCALS : 0);
+    }
+
+    /**
+     * Where the ray enters the box at offset {@code o} within {@code (tMin, tMax)}, or {@link #MISS}. The slab test
+     * is conservative on both ends (see {@link BoundingBox}), and the ray's direction signs pick which plane of each
+     * slab is entered first, so no per-box sorting is needed.
+     *
+     * <p>For a ray with finite reciprocal directions no slab distance can be NaN, so branch-free min/max
+     * (intrinsics on x86) combine them: incoherent rays would mispredict most comparisons. A ray with a zero (or
+     * subnormal) direction component gets {@code 0 * inf = NaN} when it lies in a slab's plane; comparisons
+     * ignore the NaN there.
+     */
+    private static double entry(float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
+        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
+        double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
+        double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
+        double ny = (boxes[o + nearY] - ray.oy) * ray.invDy;
+        double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
+        double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
+        double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
+        double near = tMin, far = tMax;
+        if ((signs & FINITE_RECIPROCALS) != 0) {
+            // Balanced trees: two dependent min/max steps instead of three.
+            near = Math.max(Math.max(nx * NEAR_SCALE, ny * NEAR_SCALE), Math.max(nz * NEAR_SCALE, near));
+            far = Math.min(
+                    Math.min(fx * BoundingBox.FAR_SCALE, fy * BoundingBox.FAR_SCALE),
+                    Math.min(fz * BoundingBox.FAR_SCALE, far));
+        } else {
+            if (nx > near) near = nx * NEAR_SCALE;
+            if (ny > near) near = ny * NEAR_SCALE;
+            if (nz > near) near = nz * NEAR_SCALE;
+            if (fx * BoundingBox.FAR_SCALE < far) far = fx * BoundingBox.FAR_SCALE;
+            if (fy * BoundingBox.FAR_SCALE < far) far = fy * BoundingBox.FAR_SCALE;
+            if (fz * BoundingBox.FAR_SCALE < far) far = fz * BoundingBox.FAR_SCALE;
+        }
+        // A box entered only at infinity holds no hit at a finite distance.
+        return near <= far ? near : MISS;
+    }
+
+    /** The entry distance of a missed box: no finite hit distance reaches it. */
+    private static final double MISS = Double.POSITIVE_INFINITY;
+
+    /** Flag in the direction signs: all reciprocal directions are finite, so slab distances are never NaN. */
+    private static final int FINITE_RECIPROCALS = 8;
 
     /** Pulls the near slab distance toward the origin as the far one is pushed away. */
     private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
@@ -322,44 +368,46 @@ public final class Accelerator implements Intersectable {
                 return false;
             }
             if (boundedCount == 0) return false;
-            final double[] nb = bvh.nodeBounds;
-            final int[] nd = bvh.nodeData;
+            final float[] nodes = bvh.nodes;
             final int[] stack = scratch.stack;
-            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            final int signs = directionSigns(ray);
+            long visits = 1;
             int sp = 0;
-            int node = 0;
-            long visits = 0;
+            int link = bvh.rootLink, count = bvh.rootCount;
+            boolean more = entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < MISS;
             try {
-                while (true) {
-                    visits++;
-                    if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
-                        int info = nd[2 * node + 1];
-                        if (info > 0) {
-                            int first = nd[2 * node];
-                            for (int k = first, end = first + info; k < end; k++) {
-                                tests++;
-                                if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
-                                    return true;
-                                }
-                            }
-                            if (sp == 0) return false;
-                            node = stack[--sp];
-                        } else {
-                            int axis = -1 - info;
-                            boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
-                            if (negative) {
-                                stack[sp++] = node + 1;
-                                node = nd[2 * node];
-                            } else {
-                                stack[sp++] = nd[2 * node];
-                                node = node + 1;
+                while (more) {
+                    if (count > 0) {
+                        for (int k = link, end = link + count; k < end; k++) {
+                            tests++;
+                            if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                                return true;
                             }
                         }
                     } else {
-                        if (sp == 0) return false;
-                        node = stack[--sp];
+                        int o = BVH.NODE_STRIDE * link;
+                        visits += 2;
+                        double entry0 = entry(nodes, o, ray, signs, tMin, tMax);
+                        double entry1 = entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                        int first = entry0 <= entry1 ? 0 : 2;
+                        if (Math.min(entry0, entry1) < MISS) {
+                            if (Math.max(entry0, entry1) < MISS) {
+                                stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2 - first]);
+                                stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2 - first]);
+                            }
+                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + first]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + first]);
+                            continue;
+                        }
+                    }
+                    more = sp > 0;
+                    if (more) {
+                        sp--;
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
                     }
                 }
+                return false;
             } finally {
                 scratch.nodeVisits += visits;
             }
