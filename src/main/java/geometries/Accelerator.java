@@ -184,11 +184,11 @@ public final class Accelerator implements Intersectable {
             final float[] nodes = bvh.nodes;
             final int[] stack = hit.stack;
             final double[] stackEntry = hit.stackEntry;
-            final int signs = directionSigns(ray);
+            final int signs = BoundingBox.directionSigns(ray);
             long visits = 1;
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < MISS;
+            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
             while (more) {
                 if (count > 0) {
                     for (int k = link, end = link + count; k < end; k++) {
@@ -203,19 +203,21 @@ public final class Accelerator implements Intersectable {
                     // Both children's boxes come with this node: test both, go to the nearer, postpone the other.
                     int o = BVH.NODE_STRIDE * link;
                     visits += 2;
-                    double entry0 = entry(nodes, o, ray, signs, tMin, tMax);
-                    double entry1 = entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                    double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
+                    double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
                     // Plain branches, not index arithmetic: for coherent rays they predict well, and the CPU
                     // then fetches the next node before the box tests have finished.
                     if (entry0 <= entry1) {
-                        if (entry0 < MISS) {
-                            if (entry1 < MISS) sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK + 2, entry1);
+                        if (entry0 < BoundingBox.MISS) {
+                            if (entry1 < BoundingBox.MISS)
+                                sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK + 2, entry1);
                             link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK]);
                             count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT]);
                             continue;
                         }
-                    } else if (entry1 < MISS) {
-                        if (entry0 < MISS) sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK, entry0);
+                    } else if (entry1 < BoundingBox.MISS) {
+                        if (entry0 < BoundingBox.MISS)
+                            sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK, entry0);
                         link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2]);
                         count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2]);
                         continue;
@@ -260,64 +262,6 @@ public final class Accelerator implements Intersectable {
         stackEntry[sp] = entry;
         return sp + 1;
     }
-
-    /**
-     * Bit a is set when the ray runs toward negative axis a (reciprocal direction below zero, -0 included), and
-     * {@link #FINITE_RECIPROCALS} when no direction component is zero or subnormal.
-     */
-    private static int directionSigns(Ray ray) {
-        boolean finite = Double.isFinite(ray.invDx) && Double.isFinite(ray.invDy) && Double.isFinite(ray.invDz);
-        return (ray.invDx < 0 ? 1 : 0)
-                | (ray.invDy < 0 ? 2 : 0)
-                | (ray.invDz < 0 ? 4 : 0)
-                | (finite ? FINITE_RECIPROCALS : 0);
-    }
-
-    /**
-     * Where the ray enters the box at offset {@code o} within {@code (tMin, tMax)}, or {@link #MISS}. The slab test
-     * is conservative on both ends (see {@link BoundingBox}), and the ray's direction signs pick which plane of each
-     * slab is entered first, so no per-box sorting is needed.
-     *
-     * <p>For a ray with finite reciprocal directions no slab distance can be NaN, so branch-free min/max
-     * (intrinsics on x86) combine them: incoherent rays would mispredict most comparisons. A ray with a zero (or
-     * subnormal) direction component gets {@code 0 * inf = NaN} when it lies in a slab's plane; comparisons
-     * ignore the NaN there.
-     */
-    private static double entry(float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
-        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
-        double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
-        double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
-        double ny = (boxes[o + nearY] - ray.oy) * ray.invDy;
-        double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
-        double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
-        double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
-        double near = tMin, far = tMax;
-        if ((signs & FINITE_RECIPROCALS) != 0) {
-            // Balanced trees: two dependent min/max steps instead of three.
-            near = Math.max(Math.max(nx * NEAR_SCALE, ny * NEAR_SCALE), Math.max(nz * NEAR_SCALE, near));
-            far = Math.min(
-                    Math.min(fx * BoundingBox.FAR_SCALE, fy * BoundingBox.FAR_SCALE),
-                    Math.min(fz * BoundingBox.FAR_SCALE, far));
-        } else {
-            if (nx > near) near = nx * NEAR_SCALE;
-            if (ny > near) near = ny * NEAR_SCALE;
-            if (nz > near) near = nz * NEAR_SCALE;
-            if (fx * BoundingBox.FAR_SCALE < far) far = fx * BoundingBox.FAR_SCALE;
-            if (fy * BoundingBox.FAR_SCALE < far) far = fy * BoundingBox.FAR_SCALE;
-            if (fz * BoundingBox.FAR_SCALE < far) far = fz * BoundingBox.FAR_SCALE;
-        }
-        // A box entered only at infinity holds no hit at a finite distance.
-        return near <= far ? near : MISS;
-    }
-
-    /** The entry distance of a missed box: no finite hit distance reaches it. */
-    private static final double MISS = Double.POSITIVE_INFINITY;
-
-    /** Flag in the direction signs: all reciprocal directions are finite, so slab distances are never NaN. */
-    private static final int FINITE_RECIPROCALS = 8;
-
-    /** Pulls the near slab distance toward the origin as the far one is pushed away. */
-    private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
 
     // ---------------------------------------------------------------- shadows
 
@@ -370,11 +314,11 @@ public final class Accelerator implements Intersectable {
             if (boundedCount == 0) return false;
             final float[] nodes = bvh.nodes;
             final int[] stack = scratch.stack;
-            final int signs = directionSigns(ray);
+            final int signs = BoundingBox.directionSigns(ray);
             long visits = 1;
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < MISS;
+            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
             try {
                 while (more) {
                     if (count > 0) {
@@ -387,11 +331,11 @@ public final class Accelerator implements Intersectable {
                     } else {
                         int o = BVH.NODE_STRIDE * link;
                         visits += 2;
-                        double entry0 = entry(nodes, o, ray, signs, tMin, tMax);
-                        double entry1 = entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                        double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
+                        double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
                         int first = entry0 <= entry1 ? 0 : 2;
-                        if (Math.min(entry0, entry1) < MISS) {
-                            if (Math.max(entry0, entry1) < MISS) {
+                        if (Math.min(entry0, entry1) < BoundingBox.MISS) {
+                            if (Math.max(entry0, entry1) < BoundingBox.MISS) {
                                 stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2 - first]);
                                 stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2 - first]);
                             }

@@ -145,6 +145,64 @@ public final class BoundingBox {
         return tMin <= tMax;
     }
 
+    // ------------------------------------------------------- the BVH's kernel on outward-rounded float boxes
+
+    /**
+     * Bit a is set when the ray runs toward negative axis a (reciprocal direction below zero, -0 included), and
+     * {@link #FINITE_RECIPROCALS} when no direction component is zero or subnormal.
+     */
+    static int directionSigns(Ray ray) {
+        boolean finite = Double.isFinite(ray.invDx) && Double.isFinite(ray.invDy) && Double.isFinite(ray.invDz);
+        return (ray.invDx < 0 ? 1 : 0)
+                | (ray.invDy < 0 ? 2 : 0)
+                | (ray.invDz < 0 ? 4 : 0)
+                | (finite ? FINITE_RECIPROCALS : 0);
+    }
+
+    /**
+     * Where the ray enters the box at offset {@code o} within {@code (tMin, tMax)}, or {@link #MISS}. The slab test
+     * is conservative on both ends (see the class comment), and the ray's direction signs pick which plane of each
+     * slab is entered first, so no per-box sorting is needed.
+     *
+     * <p>For a ray with finite reciprocal directions no slab distance can be NaN, so branch-free min/max
+     * (intrinsics on x86) combine them: incoherent rays would mispredict most comparisons. A ray with a zero (or
+     * subnormal) direction component gets {@code 0 * inf = NaN} when it lies in a slab's plane; comparisons
+     * ignore the NaN there.
+     */
+    static double entry(float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
+        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
+        double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
+        double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
+        double ny = (boxes[o + nearY] - ray.oy) * ray.invDy;
+        double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
+        double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
+        double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
+        double near = tMin, far = tMax;
+        if ((signs & FINITE_RECIPROCALS) != 0) {
+            // Balanced trees: two dependent min/max steps instead of three.
+            near = Math.max(Math.max(nx * NEAR_SCALE, ny * NEAR_SCALE), Math.max(nz * NEAR_SCALE, near));
+            far = Math.min(Math.min(fx * FAR_SCALE, fy * FAR_SCALE), Math.min(fz * FAR_SCALE, far));
+        } else {
+            if (nx > near) near = nx * NEAR_SCALE;
+            if (ny > near) near = ny * NEAR_SCALE;
+            if (nz > near) near = nz * NEAR_SCALE;
+            if (fx * FAR_SCALE < far) far = fx * FAR_SCALE;
+            if (fy * FAR_SCALE < far) far = fy * FAR_SCALE;
+            if (fz * FAR_SCALE < far) far = fz * FAR_SCALE;
+        }
+        // A box entered only at infinity holds no hit at a finite distance.
+        return near <= far ? near : MISS;
+    }
+
+    /** The entry distance of a missed box: no finite hit distance reaches it. */
+    static final double MISS = Double.POSITIVE_INFINITY;
+
+    /** Flag in the direction signs: all reciprocal directions are finite, so slab distances are never NaN. */
+    static final int FINITE_RECIPROCALS = 8;
+
+    /** Pulls the near slab distance toward the origin as the far one is pushed away. */
+    private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
+
     @Override
     public boolean equals(Object obj) {
         return obj instanceof BoundingBox b
