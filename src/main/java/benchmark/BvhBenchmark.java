@@ -4,6 +4,8 @@ import geometries.Accelerator;
 import geometries.BoundingBox;
 import geometries.Intersectable;
 import geometries.Meshes;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -112,7 +114,7 @@ public final class BvhBenchmark {
     }
 
     private String header() {
-        StringBuilder h = new StringBuilder("| workload | rays | primitives | build s |");
+        StringBuilder h = new StringBuilder("| workload | rays | primitives | build s, wall (CPU) |");
         StringBuilder line = new StringBuilder("|---|---|--:|--:|");
         for (int t : threadCounts) {
             h.append(" ").append(t).append("T M rays/s/thread, wall (CPU) |");
@@ -130,23 +132,29 @@ public final class BvhBenchmark {
         Intersectable scene = workload.scene().get();
 
         double[] buildSeconds = new double[Math.max(3, runs)];
+        double[] buildCpuSeconds = new double[buildSeconds.length];
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
         Accelerator bvh = null;
         for (int i = 0; i < buildSeconds.length; i++) {
             bvh = null; // let the previous build be collected before timing the next
+            long cpuStart = cpu.getCurrentThreadCpuTime();
             long start = System.nanoTime();
             bvh = Accelerator.build(scene, true);
             buildSeconds[i] = (System.nanoTime() - start) * 1e-9;
+            buildCpuSeconds[i] = (cpu.getCurrentThreadCpuTime() - cpuStart) * 1e-9;
         }
         double build = median(buildSeconds);
+        double buildCpu = median(buildCpuSeconds);
         Accelerator brute = Accelerator.build(scene, false);
         int primitives = bvh.boundedPrimitiveCount() + bvh.unboundedPrimitiveCount();
         double bytesPerPrimitive = (double) bvh.getBvh().bytes() / primitives;
         notes.add(String.format(
                 Locale.ROOT,
-                "- %s: build %.3f s (median of %d); %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
+                "- %s: build %.3f s wall, %.3f s CPU (medians of %d); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
                         + " (all flat arrays %.1f B/prim)",
                 workload.name(),
                 build,
+                buildCpu,
                 buildSeconds.length,
                 bvh.buildBreakdown(),
                 bvh.getBvh().nodeCount(),
@@ -158,10 +166,12 @@ public final class BvhBenchmark {
         BoundingBox box = bvh.getBoundingBox();
         Ray[] coherent =
                 RaySets.pinhole(workload.eye(), workload.target(), workload.up(), FOV_DEGREES, IMAGE_SIZE, IMAGE_SIZE);
-        rows.add(row(workload, "coherent", coherent, bvh, brute, primitives, build, bytesPerPrimitive, notes));
+        rows.add(
+                row(workload, "coherent", coherent, bvh, brute, primitives, build, buildCpu, bytesPerPrimitive, notes));
         coherent = null;
         Ray[] incoherent = RaySets.incoherent(box, INCOHERENT_RAYS, SEED);
-        rows.add(row(workload, "incoherent", incoherent, bvh, brute, primitives, build, bytesPerPrimitive, notes));
+        rows.add(row(
+                workload, "incoherent", incoherent, bvh, brute, primitives, build, buildCpu, bytesPerPrimitive, notes));
     }
 
     private String row(
@@ -172,10 +182,12 @@ public final class BvhBenchmark {
             Accelerator brute,
             int primitives,
             double build,
+            double buildCpu,
             double bytesPerPrimitive,
             List<String> notes) {
         StringBuilder row = new StringBuilder();
-        row.append(String.format(Locale.ROOT, "| %s | %s | %,d | %.3f |", workload.name(), kind, primitives, build));
+        row.append(String.format(
+                Locale.ROOT, "| %s | %s | %,d | %.3f (%.3f) |", workload.name(), kind, primitives, build, buildCpu));
         double[] perThread = new double[threadCounts.length];
         double[] perCpuSecond = new double[threadCounts.length];
         RayThroughput.Pass stats = null;
