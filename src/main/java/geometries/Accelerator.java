@@ -74,12 +74,12 @@ public final class Accelerator implements Intersectable {
         for (int k = 0; k < n; k++) {
             int i = bvh == null ? k : bvh.order[k];
             ids[k] = i;
-            objects[k] = c.objects.get(i);
-            mayTransmit[k] = c.mayTransmit.get(i);
+            objects[k] = c.objects[i];
+            mayTransmit[k] = c.mayTransmit[i];
             if (objects[k] == null) {
                 System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
                 sharedEdges[k] = c.shared[i];
-                owners[k] = c.owners.get(i);
+                owners[k] = c.owners[i];
                 parts[k] = c.parts[i];
             }
         }
@@ -402,10 +402,11 @@ public final class Accelerator implements Intersectable {
         double[] triangles = new double[9 * 64];
         int[] shared = new int[64];
         int[] parts = new int[64];
-        final List<Geometry> owners = new ArrayList<>();
-        final List<Intersectable> objects = new ArrayList<>();
-        final List<Boolean> mayTransmit = new ArrayList<>();
-        final List<BoundingBox> objectBoxes = new ArrayList<>();
+        // Plain arrays grown by doubling, like the ones above: a million-triangle mesh passes through here.
+        Geometry[] owners = new Geometry[64];
+        Intersectable[] objects = new Intersectable[64];
+        boolean[] mayTransmit = new boolean[64];
+        BoundingBox[] objectBoxes = new BoundingBox[64];
         final List<Intersectable> unbounded = new ArrayList<>();
         /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
         final Map<EdgeKey, List<int[]>> outlineEdges = new HashMap<>();
@@ -441,7 +442,9 @@ public final class Accelerator implements Intersectable {
         private void collectMesh(Mesh mesh) {
             boolean transmit = mesh.getMaterial().isTransparent();
             int[] idx = mesh.indices;
-            for (int i = 0; i < mesh.triangleCount(); i++) {
+            int triangles = mesh.triangleCount();
+            ensureCapacity(count + triangles);
+            for (int i = 0; i < triangles; i++) {
                 if (mesh.isDegenerate(i)) continue; // never hit; keeps zero-area boxes out of the tree
                 addTriangle(
                         mesh.vertices,
@@ -457,37 +460,37 @@ public final class Accelerator implements Intersectable {
 
         private int addTriangle(
                 double[] v, int a, int b, int c, Geometry owner, int part, int sharedFlags, boolean transmit) {
-            if (count == shared.length) {
-                int capacity = 2 * count;
-                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
-                shared = java.util.Arrays.copyOf(shared, capacity);
-                parts = java.util.Arrays.copyOf(parts, capacity);
-            }
+            ensureCapacity(count + 1);
             int o = 9 * count;
             System.arraycopy(v, a, triangles, o, 3);
             System.arraycopy(v, b, triangles, o + 3, 3);
             System.arraycopy(v, c, triangles, o + 6, 3);
             shared[count] = sharedFlags;
             parts[count] = part;
-            owners.add(owner);
-            objects.add(null);
-            objectBoxes.add(null);
-            mayTransmit.add(transmit);
+            owners[count] = owner;
+            mayTransmit[count] = transmit;
             return count++;
         }
 
         private void addObject(Intersectable g) {
-            if (count == shared.length) {
-                int capacity = 2 * count;
-                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
-                shared = java.util.Arrays.copyOf(shared, capacity);
-                parts = java.util.Arrays.copyOf(parts, capacity);
-            }
-            owners.add(null);
-            objects.add(g);
-            objectBoxes.add(g.getBoundingBox());
-            mayTransmit.add(mayTransmit(g));
+            ensureCapacity(count + 1);
+            objects[count] = g;
+            objectBoxes[count] = g.getBoundingBox();
+            mayTransmit[count] = mayTransmit(g);
             count++;
+        }
+
+        /** Makes room for {@code needed} primitives in all per-primitive arrays (a mesh asks once for all). */
+        private void ensureCapacity(int needed) {
+            if (needed <= shared.length) return;
+            int capacity = Math.max(needed, 2 * shared.length);
+            triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
+            shared = java.util.Arrays.copyOf(shared, capacity);
+            parts = java.util.Arrays.copyOf(parts, capacity);
+            owners = java.util.Arrays.copyOf(owners, capacity);
+            objects = java.util.Arrays.copyOf(objects, capacity);
+            mayTransmit = java.util.Arrays.copyOf(mayTransmit, capacity);
+            objectBoxes = java.util.Arrays.copyOf(objectBoxes, capacity);
         }
 
         private void outline(int primitive, int edgeFlag, double[] v, int from, int to) {
@@ -508,7 +511,7 @@ public final class Accelerator implements Intersectable {
             double[] boxes = new double[6 * count];
             for (int k = 0; k < count; k++) {
                 int b = 6 * k;
-                BoundingBox box = objectBoxes.get(k);
+                BoundingBox box = objectBoxes[k];
                 if (box == null) {
                     int o = 9 * k;
                     for (int a = 0; a < 3; a++) {
