@@ -170,6 +170,23 @@ public final class BoundingBox {
      * ignore the NaN there.
      */
     static double entry(float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
+        // Kept small on purpose: the JIT inlines it into the traversal loop only below 325 bytes of bytecode.
+        if ((signs & FINITE_RECIPROCALS) == 0) return entryWithInfiniteReciprocals(boxes, o, ray, signs, tMin, tMax);
+        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
+        double near = Math.max(
+                Math.max((boxes[o + nearX] - ray.ox) * ray.invDx, (boxes[o + nearY] - ray.oy) * ray.invDy),
+                (boxes[o + nearZ] - ray.oz) * ray.invDz);
+        double far = Math.min(
+                Math.min((boxes[o + 3 - nearX] - ray.ox) * ray.invDx, (boxes[o + 5 - nearY] - ray.oy) * ray.invDy),
+                (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz);
+        near -= Math.abs(near) * SLAB_SLACK;
+        far += Math.abs(far) * SLAB_SLACK;
+        return (near <= far) & (near <= tMax) & (far >= tMin) ? near : MISS;
+    }
+
+    /** {@link #entry} for rays with a zero direction component, whose slab distances may be NaN. */
+    private static double entryWithInfiniteReciprocals(
+            float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
         int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
         double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
         double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
@@ -177,24 +194,16 @@ public final class BoundingBox {
         double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
         double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
         double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
+        // "nx > near" is false for NaN, so a NaN slab leaves the interval unchanged.
         double near = tMin, far = tMax;
-        if ((signs & FINITE_RECIPROCALS) != 0) {
-            // The interval's own ends are compared, not folded into the min/max: each intrinsic costs several
-            // instructions, and this test runs tens of times per ray.
-            near = Math.max(Math.max(nx, ny), nz);
-            far = Math.min(Math.min(fx, fy), fz);
-            near -= Math.abs(near) * SLAB_SLACK;
-            far += Math.abs(far) * SLAB_SLACK;
-            return (near <= far) & (near <= tMax) & (far >= tMin) ? near : MISS;
-        } else {
-            if (nx > near) near = nx * NEAR_SCALE;
-            if (ny > near) near = ny * NEAR_SCALE;
-            if (nz > near) near = nz * NEAR_SCALE;
-            if (fx * FAR_SCALE < far) far = fx * FAR_SCALE;
-            if (fy * FAR_SCALE < far) far = fy * FAR_SCALE;
-            if (fz * FAR_SCALE < far) far = fz * FAR_SCALE;
-        }
-        // A box entered only at infinity holds no hit at a finite distance.
+        if (nx > near) near = nx;
+        if (ny > near) near = ny;
+        if (nz > near) near = nz;
+        if (fx < far) far = fx;
+        if (fy < far) far = fy;
+        if (fz < far) far = fz;
+        near -= Math.abs(near) * SLAB_SLACK;
+        far += Math.abs(far) * SLAB_SLACK;
         return near <= far ? near : MISS;
     }
 
@@ -204,10 +213,10 @@ public final class BoundingBox {
     /** Flag in the direction signs: all reciprocal directions are finite, so slab distances are never NaN. */
     static final int FINITE_RECIPROCALS = 8;
 
-    /** Pulls the near slab distance toward the origin as the far one is pushed away. */
-    private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
-
-    /** The same margin as a fraction of the magnitude, so it widens the slab for distances of either sign. */
+    /**
+     * Margin on slab distances as a fraction of their magnitude (the 2 gamma(3) of {@link #FAR_SCALE}), applied to
+     * both ends so it widens the slab whatever the sign of the distances.
+     */
     private static final double SLAB_SLACK = 2 * primitives.Util.gamma(3);
 
     @Override
