@@ -33,15 +33,17 @@ public final class Accelerator implements Intersectable {
     /** Per bounded primitive in search order: 9 coordinates if it is a triangle. */
     private final double[] triangles;
 
-    private final int[] sharedEdges;
-    /** The geometry owning each triangle and the part index within it. */
+    /**
+     * Two ints per primitive, read together by every test: the original (insertion) index, which is the
+     * deterministic tie-break, then a triangle's shared-edge flags or {@link #OBJECT} for other shapes.
+     */
+    private final int[] info;
+    /** The geometry owning each triangle and the part index within it; read once per query, for the final hit. */
     private final Geometry[] owners;
 
     private final int[] parts;
     /** Non-triangle bounded primitives (null where the primitive is a triangle). */
     private final Intersectable[] objects;
-    /** Original (insertion) index of each primitive: the deterministic tie-break. */
-    private final int[] ids;
     /** Whether a primitive may let light through (then shadow rays must look past it). */
     private final boolean[] mayTransmit;
 
@@ -65,22 +67,23 @@ public final class Accelerator implements Intersectable {
         boxSeconds = (boxesDone - start) * 1e-9;
         bvhSeconds = (bvhDone - boxesDone) * 1e-9;
         triangles = new double[9 * n];
-        sharedEdges = new int[n];
+        info = new int[2 * n];
         owners = new Geometry[n];
         parts = new int[n];
         objects = new Intersectable[n];
-        ids = new int[n];
         mayTransmit = new boolean[n];
         for (int k = 0; k < n; k++) {
             int i = bvh == null ? k : bvh.order[k];
-            ids[k] = i;
+            info[2 * k] = i;
             objects[k] = c.objects[i];
             mayTransmit[k] = c.mayTransmit[i];
             if (objects[k] == null) {
                 System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
-                sharedEdges[k] = c.shared[i];
+                info[2 * k + 1] = c.shared[i];
                 owners[k] = c.owners[i];
                 parts[k] = c.parts[i];
+            } else {
+                info[2 * k + 1] = OBJECT;
             }
         }
         unbounded = c.unbounded.toArray(new Intersectable[0]);
@@ -143,7 +146,7 @@ public final class Accelerator implements Intersectable {
     /** Bytes of the flat primitive arrays plus the BVH. */
     public long bytes() {
         long b = 8L * triangles.length
-                + 4L * (sharedEdges.length + parts.length + ids.length)
+                + 4L * (info.length + parts.length)
                 + 8L * (owners.length + objects.length)
                 + mayTransmit.length;
         return b + (bvh == null ? 0 : bvh.bytes());
@@ -161,6 +164,8 @@ public final class Accelerator implements Intersectable {
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
         int best = Integer.MAX_VALUE;
+        // Where the best hit so far is a triangle, its slot: its geometry and part are filled in at the end.
+        int bestTriangle = -1;
         double tieLimit = tMax;
         long tests = 0;
         for (int j = 0; j < unbounded.length; j++) {
@@ -174,10 +179,11 @@ public final class Accelerator implements Intersectable {
         if (bvh == null) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
-                if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
                     tMax = hit.t;
                     tieLimit = Math.nextUp(tMax);
-                    best = ids[k];
+                    best = info[2 * k];
+                    bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
                 }
             }
         } else if (boundedCount > 0) {
@@ -193,10 +199,11 @@ public final class Accelerator implements Intersectable {
                 if (count > 0) {
                     for (int k = link, end = link + count; k < end; k++) {
                         tests++;
-                        if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                        if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
                             tMax = hit.t;
                             tieLimit = Math.nextUp(tMax);
-                            best = ids[k];
+                            best = info[2 * k];
+                            bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
                         }
                     }
                 } else {
@@ -238,22 +245,27 @@ public final class Accelerator implements Intersectable {
         }
         hit.primitiveTests += tests;
         if (best == Integer.MAX_VALUE) return false;
+        if (bestTriangle >= 0) {
+            hit.geometry = owners[bestTriangle];
+            hit.part = parts[bestTriangle];
+        }
         hit.primitiveIndex = best;
         return true;
     }
 
-    /** Tests bounded primitive {@code k}; on a hit fills the record's geometry and part as well. */
+    /**
+     * Tests bounded primitive {@code k}. A triangle leaves the record's geometry and part alone (the caller fills
+     * them for the final hit only: fewer arrays touched per test); other shapes fill them.
+     */
     private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
-        Intersectable object = objects[k];
-        if (object != null) return object.intersect(ray, tMin, tMax, hit);
+        int edges = info[2 * k + 1];
+        if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
         int o = 9 * k;
-        if (WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, hit)) {
-            hit.geometry = owners[k];
-            hit.part = parts[k];
-            return true;
-        }
-        return false;
+        return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
     }
+
+    /** The shared-edge entry of {@link #info} for a primitive that is not a triangle. */
+    private static final int OBJECT = -1;
 
     /** Postpones the child whose link and count are at {@code child}; returns the new stack size. */
     private static int push(int[] stack, double[] stackEntry, int sp, float[] nodes, int child, double entry) {
@@ -362,16 +374,16 @@ public final class Accelerator implements Intersectable {
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */
     private boolean blocks(int k, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
-        Intersectable object = objects[k];
-        if (object != null) return blocks(object, ids[k], mayPass, ray, tMin, tMax, scratch);
+        int edges = info[2 * k + 1];
+        if (edges == OBJECT) return blocks(objects[k], info[2 * k], mayPass, ray, tMin, tMax, scratch);
         int o = 9 * k;
-        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, scratch)) {
+        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, scratch)) {
             return false;
         }
         if (!mayPass) return true;
         Double3 kT = owners[k].getMaterial().getKt();
         if (kT.isZero()) return true;
-        scratch.addTransparentHit(ids[k], kT);
+        scratch.addTransparentHit(info[2 * k], kT);
         return false;
     }
 
