@@ -230,7 +230,7 @@ public final class Accelerator implements Intersectable {
                         continue;
                     }
                 }
-                // Resume with the nearest postponed child the closest hit so far has not put out of reach.
+                // Resume with the most recently postponed child that the closest hit has not put out of reach.
                 more = false;
                 while (sp > 0) {
                     if (stackEntry[--sp] <= tMax) {
