@@ -33,15 +33,17 @@ public final class Accelerator implements Intersectable {
     /** Per bounded primitive in search order: 9 coordinates if it is a triangle. */
     private final double[] triangles;
 
-    private final int[] sharedEdges;
-    /** The geometry owning each triangle and the part index within it. */
+    /**
+     * Two ints per primitive, read together by every test: the original (insertion) index, which is the
+     * deterministic tie-break, then a triangle's shared-edge flags or {@link #OBJECT} for other shapes.
+     */
+    private final int[] info;
+    /** The geometry owning each triangle and the part index within it; read once per query, for the final hit. */
     private final Geometry[] owners;
 
     private final int[] parts;
     /** Non-triangle bounded primitives (null where the primitive is a triangle). */
     private final Intersectable[] objects;
-    /** Original (insertion) index of each primitive: the deterministic tie-break. */
-    private final int[] ids;
     /** Whether a primitive may let light through (then shadow rays must look past it). */
     private final boolean[] mayTransmit;
 
@@ -49,30 +51,39 @@ public final class Accelerator implements Intersectable {
     private final boolean[] unboundedMayTransmit;
     private final BVH bvh;
     private final double buildSeconds;
+    /** Build phases in seconds: gathering primitives, primitive boxes, the BVH proper, laying out the arrays. */
+    private final double collectSeconds, boxSeconds, bvhSeconds, layoutSeconds;
 
-    private Accelerator(Collector c, boolean useBvh, int bins, int maxLeafSize) {
+    private Accelerator(Collector c, boolean useBvh, int bins, int maxLeafSize, long collectStart) {
         long start = System.nanoTime();
+        collectSeconds = (start - collectStart) * 1e-9;
         c.markSharedOutlineEdges();
         int n = c.count;
         boundedCount = n;
-        bvh = useBvh && n > 0 ? BVH.build(c.boxes(), bins, maxLeafSize) : null;
+        double[] boxes = useBvh && n > 0 ? c.boxes() : null;
+        long boxesDone = System.nanoTime();
+        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize) : null;
+        long bvhDone = System.nanoTime();
+        boxSeconds = (boxesDone - start) * 1e-9;
+        bvhSeconds = (bvhDone - boxesDone) * 1e-9;
         triangles = new double[9 * n];
-        sharedEdges = new int[n];
+        info = new int[2 * n];
         owners = new Geometry[n];
         parts = new int[n];
         objects = new Intersectable[n];
-        ids = new int[n];
         mayTransmit = new boolean[n];
         for (int k = 0; k < n; k++) {
             int i = bvh == null ? k : bvh.order[k];
-            ids[k] = i;
-            objects[k] = c.objects.get(i);
-            mayTransmit[k] = c.mayTransmit.get(i);
+            info[2 * k] = i;
+            objects[k] = c.objects[i];
+            mayTransmit[k] = c.mayTransmit[i];
             if (objects[k] == null) {
                 System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
-                sharedEdges[k] = c.shared[i];
-                owners[k] = c.owners.get(i);
+                info[2 * k + 1] = c.shared[i];
+                owners[k] = c.owners[i];
                 parts[k] = c.parts[i];
+            } else {
+                info[2 * k + 1] = OBJECT;
             }
         }
         unbounded = c.unbounded.toArray(new Intersectable[0]);
@@ -80,7 +91,9 @@ public final class Accelerator implements Intersectable {
         for (int j = 0; j < unbounded.length; j++) {
             unboundedMayTransmit[j] = mayTransmit(unbounded[j]);
         }
-        buildSeconds = (System.nanoTime() - start) * 1e-9;
+        long end = System.nanoTime();
+        layoutSeconds = (end - bvhDone) * 1e-9;
+        buildSeconds = (end - collectStart) * 1e-9;
     }
 
     /** Compiles {@code geometry} with a BVH of default settings, or for brute-force search. */
@@ -91,9 +104,12 @@ public final class Accelerator implements Intersectable {
     /** Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build. */
     public static Accelerator build(Intersectable geometry, boolean useBvh, int bins, int maxLeafSize) {
         primitives.Util.requireNonNull(geometry, "geometry");
+        // Checked here, not only in BVH.build, so bad settings fail the same way for empty and brute-force scenes.
+        BVH.validateSettings(bins, maxLeafSize);
+        long start = System.nanoTime();
         Collector c = new Collector();
         c.collect(geometry);
-        return new Accelerator(c, useBvh, bins, maxLeafSize);
+        return new Accelerator(c, useBvh, bins, maxLeafSize, start);
     }
 
     /** The BVH, or null in brute-force mode or for a scene without bounded geometry. */
@@ -116,10 +132,21 @@ public final class Accelerator implements Intersectable {
         return buildSeconds;
     }
 
+    /** Where the build time went, phase by phase, for benchmark reports. */
+    public String buildBreakdown() {
+        return String.format(
+                java.util.Locale.ROOT,
+                "collect %.3f s, boxes %.3f s, BVH %.3f s, layout %.3f s",
+                collectSeconds,
+                boxSeconds,
+                bvhSeconds,
+                layoutSeconds);
+    }
+
     /** Bytes of the flat primitive arrays plus the BVH. */
     public long bytes() {
         long b = 8L * triangles.length
-                + 4L * (sharedEdges.length + parts.length + ids.length)
+                + 4L * (info.length + parts.length)
                 + 8L * (owners.length + objects.length)
                 + mayTransmit.length;
         return b + (bvh == null ? 0 : bvh.bytes());
@@ -128,7 +155,7 @@ public final class Accelerator implements Intersectable {
     @Override
     public BoundingBox getBoundingBox() {
         if (unbounded.length > 0 || boundedCount == 0) return null;
-        if (bvh != null) return bvh.node(0).bounds();
+        if (bvh != null) return bvh.bounds();
         throw new UnsupportedOperationException("bounds of a brute-force accelerator are not tracked");
     }
 
@@ -137,6 +164,8 @@ public final class Accelerator implements Intersectable {
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
         int best = Integer.MAX_VALUE;
+        // Where the best hit so far is a triangle, its slot: its geometry and part are filled in at the end.
+        int bestTriangle = -1;
         double tieLimit = tMax;
         long tests = 0;
         for (int j = 0; j < unbounded.length; j++) {
@@ -150,104 +179,101 @@ public final class Accelerator implements Intersectable {
         if (bvh == null) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
-                if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
+                if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
                     tMax = hit.t;
                     tieLimit = Math.nextUp(tMax);
-                    best = ids[k];
+                    best = info[2 * k];
+                    bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
                 }
             }
         } else if (boundedCount > 0) {
-            final double[] nb = bvh.nodeBounds;
-            final int[] nd = bvh.nodeData;
+            final float[] nodes = bvh.nodes;
             final int[] stack = hit.stack;
-            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            final double[] stackEntry = hit.stackEntry;
+            final int signs = BoundingBox.directionSigns(ray);
+            long visits = 1;
             int sp = 0;
-            int node = 0;
-            long visits = 0;
-            while (true) {
-                visits++;
-                if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
-                    int info = nd[2 * node + 1];
-                    if (info > 0) {
-                        int first = nd[2 * node];
-                        for (int k = first, end = first + info; k < end; k++) {
-                            tests++;
-                            if (testPrimitive(k, ray, tMin, ids[k] < best ? tieLimit : tMax, hit)) {
-                                tMax = hit.t;
-                                tieLimit = Math.nextUp(tMax);
-                                best = ids[k];
-                            }
-                        }
-                        if (sp == 0) break;
-                        node = stack[--sp];
-                    } else {
-                        int axis = -1 - info;
-                        boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
-                        // Visit the nearer child first: with a negative direction that is the second child.
-                        if (negative) {
-                            stack[sp++] = node + 1;
-                            node = nd[2 * node];
-                        } else {
-                            stack[sp++] = nd[2 * node];
-                            node = node + 1;
+            int link = bvh.rootLink, count = bvh.rootCount;
+            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
+            while (more) {
+                if (count > 0) {
+                    for (int k = link, end = link + count; k < end; k++) {
+                        tests++;
+                        if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
+                            tMax = hit.t;
+                            tieLimit = Math.nextUp(tMax);
+                            best = info[2 * k];
+                            bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
                         }
                     }
                 } else {
-                    if (sp == 0) break;
-                    node = stack[--sp];
+                    // Both children's boxes come with this node: test both, go to the nearer, postpone the other.
+                    int o = BVH.NODE_STRIDE * link;
+                    visits += 2;
+                    double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
+                    double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                    // Plain branches, not index arithmetic: for coherent rays they predict well, and the CPU
+                    // then fetches the next node before the box tests have finished.
+                    if (entry0 <= entry1) {
+                        if (entry0 < BoundingBox.MISS) {
+                            if (entry1 < BoundingBox.MISS)
+                                sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK + 2, entry1);
+                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT]);
+                            continue;
+                        }
+                    } else if (entry1 < BoundingBox.MISS) {
+                        if (entry0 < BoundingBox.MISS)
+                            sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK, entry0);
+                        link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2]);
+                        count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2]);
+                        continue;
+                    }
+                }
+                // Resume with the most recently postponed child that the closest hit has not put out of reach.
+                more = false;
+                while (sp > 0) {
+                    if (stackEntry[--sp] <= tMax) {
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
+                        more = true;
+                        break;
+                    }
                 }
             }
             hit.nodeVisits += visits;
         }
         hit.primitiveTests += tests;
         if (best == Integer.MAX_VALUE) return false;
+        if (bestTriangle >= 0) {
+            hit.geometry = owners[bestTriangle];
+            hit.part = parts[bestTriangle];
+        }
         hit.primitiveIndex = best;
         return true;
     }
 
-    /** Tests bounded primitive {@code k}; on a hit fills the record's geometry and part as well. */
+    /**
+     * Tests bounded primitive {@code k}. A triangle leaves the record's geometry and part alone (the caller fills
+     * them for the final hit only: fewer arrays touched per test); other shapes fill them.
+     */
     private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
-        Intersectable object = objects[k];
-        if (object != null) return object.intersect(ray, tMin, tMax, hit);
+        int edges = info[2 * k + 1];
+        if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
         int o = 9 * k;
-        if (WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, hit)) {
-            hit.geometry = owners[k];
-            hit.part = parts[k];
-            return true;
-        }
-        return false;
+        return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
     }
 
-    /** The slab test against node bounds, conservative on both ends (see {@link BoundingBox}). */
-    private static boolean hitsNode(double[] nb, int b, Ray ray, double tMin, double tMax) {
-        double t0 = (nb[b] - ray.ox) * ray.invDx;
-        double t1 = (nb[b + 3] - ray.ox) * ray.invDx;
-        double near = t0 < t1 ? t0 : t1;
-        double far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        if (tMin > tMax) return false;
-        t0 = (nb[b + 1] - ray.oy) * ray.invDy;
-        t1 = (nb[b + 4] - ray.oy) * ray.invDy;
-        near = t0 < t1 ? t0 : t1;
-        far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        if (tMin > tMax) return false;
-        t0 = (nb[b + 2] - ray.oz) * ray.invDz;
-        t1 = (nb[b + 5] - ray.oz) * ray.invDz;
-        near = t0 < t1 ? t0 : t1;
-        far = t0 < t1 ? t1 : t0;
-        if (near > tMin) tMin = near * NEAR_SCALE;
-        far *= BoundingBox.FAR_SCALE;
-        if (far < tMax) tMax = far;
-        return tMin <= tMax;
-    }
+    /** The shared-edge entry of {@link #info} for a primitive that is not a triangle. */
+    private static final int OBJECT = -1;
 
-    /** Pulls the near slab distance toward the origin as the far one is pushed away. */
-    private static final double NEAR_SCALE = 1 - 2 * primitives.Util.gamma(3);
+    /** Postpones the child whose link and count are at {@code child}; returns the new stack size. */
+    private static int push(int[] stack, double[] stackEntry, int sp, float[] nodes, int child, double entry) {
+        stack[2 * sp] = Float.floatToRawIntBits(nodes[child]);
+        stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[child + 1]);
+        stackEntry[sp] = entry;
+        return sp + 1;
+    }
 
     // ---------------------------------------------------------------- shadows
 
@@ -298,44 +324,46 @@ public final class Accelerator implements Intersectable {
                 return false;
             }
             if (boundedCount == 0) return false;
-            final double[] nb = bvh.nodeBounds;
-            final int[] nd = bvh.nodeData;
+            final float[] nodes = bvh.nodes;
             final int[] stack = scratch.stack;
-            final boolean negX = ray.invDx < 0, negY = ray.invDy < 0, negZ = ray.invDz < 0;
+            final int signs = BoundingBox.directionSigns(ray);
+            long visits = 1;
             int sp = 0;
-            int node = 0;
-            long visits = 0;
+            int link = bvh.rootLink, count = bvh.rootCount;
+            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
             try {
-                while (true) {
-                    visits++;
-                    if (hitsNode(nb, 6 * node, ray, tMin, tMax)) {
-                        int info = nd[2 * node + 1];
-                        if (info > 0) {
-                            int first = nd[2 * node];
-                            for (int k = first, end = first + info; k < end; k++) {
-                                tests++;
-                                if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
-                                    return true;
-                                }
-                            }
-                            if (sp == 0) return false;
-                            node = stack[--sp];
-                        } else {
-                            int axis = -1 - info;
-                            boolean negative = axis == 0 ? negX : axis == 1 ? negY : negZ;
-                            if (negative) {
-                                stack[sp++] = node + 1;
-                                node = nd[2 * node];
-                            } else {
-                                stack[sp++] = nd[2 * node];
-                                node = node + 1;
+                while (more) {
+                    if (count > 0) {
+                        for (int k = link, end = link + count; k < end; k++) {
+                            tests++;
+                            if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                                return true;
                             }
                         }
                     } else {
-                        if (sp == 0) return false;
-                        node = stack[--sp];
+                        int o = BVH.NODE_STRIDE * link;
+                        visits += 2;
+                        double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
+                        double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
+                        int first = entry0 <= entry1 ? 0 : 2;
+                        if (Math.min(entry0, entry1) < BoundingBox.MISS) {
+                            if (Math.max(entry0, entry1) < BoundingBox.MISS) {
+                                stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2 - first]);
+                                stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2 - first]);
+                            }
+                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + first]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + first]);
+                            continue;
+                        }
+                    }
+                    more = sp > 0;
+                    if (more) {
+                        sp--;
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
                     }
                 }
+                return false;
             } finally {
                 scratch.nodeVisits += visits;
             }
@@ -346,16 +374,16 @@ public final class Accelerator implements Intersectable {
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */
     private boolean blocks(int k, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
-        Intersectable object = objects[k];
-        if (object != null) return blocks(object, ids[k], mayPass, ray, tMin, tMax, scratch);
+        int edges = info[2 * k + 1];
+        if (edges == OBJECT) return blocks(objects[k], info[2 * k], mayPass, ray, tMin, tMax, scratch);
         int o = 9 * k;
-        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, sharedEdges[k], ray, tMin, tMax, scratch)) {
+        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, scratch)) {
             return false;
         }
         if (!mayPass) return true;
         Double3 kT = owners[k].getMaterial().getKt();
         if (kT.isZero()) return true;
-        scratch.addTransparentHit(ids[k], kT);
+        scratch.addTransparentHit(info[2 * k], kT);
         return false;
     }
 
@@ -386,10 +414,11 @@ public final class Accelerator implements Intersectable {
         double[] triangles = new double[9 * 64];
         int[] shared = new int[64];
         int[] parts = new int[64];
-        final List<Geometry> owners = new ArrayList<>();
-        final List<Intersectable> objects = new ArrayList<>();
-        final List<Boolean> mayTransmit = new ArrayList<>();
-        final List<BoundingBox> objectBoxes = new ArrayList<>();
+        // Plain arrays grown by doubling, like the ones above: a million-triangle mesh passes through here.
+        Geometry[] owners = new Geometry[64];
+        Intersectable[] objects = new Intersectable[64];
+        boolean[] mayTransmit = new boolean[64];
+        BoundingBox[] objectBoxes = new BoundingBox[64];
         final List<Intersectable> unbounded = new ArrayList<>();
         /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
         final Map<EdgeKey, List<int[]>> outlineEdges = new HashMap<>();
@@ -425,7 +454,9 @@ public final class Accelerator implements Intersectable {
         private void collectMesh(Mesh mesh) {
             boolean transmit = mesh.getMaterial().isTransparent();
             int[] idx = mesh.indices;
-            for (int i = 0; i < mesh.triangleCount(); i++) {
+            int triangles = mesh.triangleCount();
+            ensureCapacity(count + triangles);
+            for (int i = 0; i < triangles; i++) {
                 if (mesh.isDegenerate(i)) continue; // never hit; keeps zero-area boxes out of the tree
                 addTriangle(
                         mesh.vertices,
@@ -441,37 +472,37 @@ public final class Accelerator implements Intersectable {
 
         private int addTriangle(
                 double[] v, int a, int b, int c, Geometry owner, int part, int sharedFlags, boolean transmit) {
-            if (count == shared.length) {
-                int capacity = 2 * count;
-                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
-                shared = java.util.Arrays.copyOf(shared, capacity);
-                parts = java.util.Arrays.copyOf(parts, capacity);
-            }
+            ensureCapacity(count + 1);
             int o = 9 * count;
             System.arraycopy(v, a, triangles, o, 3);
             System.arraycopy(v, b, triangles, o + 3, 3);
             System.arraycopy(v, c, triangles, o + 6, 3);
             shared[count] = sharedFlags;
             parts[count] = part;
-            owners.add(owner);
-            objects.add(null);
-            objectBoxes.add(null);
-            mayTransmit.add(transmit);
+            owners[count] = owner;
+            mayTransmit[count] = transmit;
             return count++;
         }
 
         private void addObject(Intersectable g) {
-            if (count == shared.length) {
-                int capacity = 2 * count;
-                triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
-                shared = java.util.Arrays.copyOf(shared, capacity);
-                parts = java.util.Arrays.copyOf(parts, capacity);
-            }
-            owners.add(null);
-            objects.add(g);
-            objectBoxes.add(g.getBoundingBox());
-            mayTransmit.add(mayTransmit(g));
+            ensureCapacity(count + 1);
+            objects[count] = g;
+            objectBoxes[count] = g.getBoundingBox();
+            mayTransmit[count] = mayTransmit(g);
             count++;
+        }
+
+        /** Makes room for {@code needed} primitives in all per-primitive arrays (a mesh asks once for all). */
+        private void ensureCapacity(int needed) {
+            if (needed <= shared.length) return;
+            int capacity = Math.max(needed, 2 * shared.length);
+            triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
+            shared = java.util.Arrays.copyOf(shared, capacity);
+            parts = java.util.Arrays.copyOf(parts, capacity);
+            owners = java.util.Arrays.copyOf(owners, capacity);
+            objects = java.util.Arrays.copyOf(objects, capacity);
+            mayTransmit = java.util.Arrays.copyOf(mayTransmit, capacity);
+            objectBoxes = java.util.Arrays.copyOf(objectBoxes, capacity);
         }
 
         private void outline(int primitive, int edgeFlag, double[] v, int from, int to) {
@@ -492,7 +523,7 @@ public final class Accelerator implements Intersectable {
             double[] boxes = new double[6 * count];
             for (int k = 0; k < count; k++) {
                 int b = 6 * k;
-                BoundingBox box = objectBoxes.get(k);
+                BoundingBox box = objectBoxes[k];
                 if (box == null) {
                     int o = 9 * k;
                     for (int a = 0; a < 3; a++) {

@@ -1,27 +1,53 @@
 package geometries;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * A bounding volume hierarchy built top-down with a binned surface-area heuristic and flattened depth-first into
- * primitive arrays: six doubles of bounds and two ints per node. Interior nodes store their second child and split
- * axis (the first child follows the parent); leaves store a range of the primitive order.
+ * one primitive array. Each interior node is 64 bytes, one cache line: the boxes of its two children as floats
+ * rounded outward (so box tests stay conservative) and, per child, a link and a count. A child with a count is a
+ * leaf holding that many primitives of the leaf order from its link; a child with count 0 is the interior node its
+ * link names. The first interior child of a node follows it in the array (depth-first order).
+ *
+ * <p>Keeping both child boxes in the parent lets the traversal test the two children with one memory fetch and
+ * visit the nearer first; incoherent rays are bound by those fetches (see docs/BENCHMARKS.md).
  *
  * <p>Build: at each node the centroids are binned along the axis of largest centroid extent; the split between
- * bins that minimises {@code 1/2 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper and
+ * bins that minimises {@code 1 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper and
  * small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The traversal lives in
  * {@link Accelerator}, next to the primitive data it tests.
  */
 public final class BVH {
     /** Deepest node level; the traversal stack is sized from it. */
     public static final int MAX_DEPTH = 64;
-    /** Cost of visiting a node relative to testing a primitive (pbrt-v4 uses the same). */
-    private static final double TRAVERSAL_COST = 0.5;
+    /**
+     * Cost of visiting a node relative to testing a primitive. pbrt-v4 uses 0.5; here a visit tests both child
+     * boxes, which the JMH kernels put at about one watertight triangle test, and 1.0 measured faster on the
+     * icosphere (fewer, fuller leaves) and the same on the heightfield.
+     */
+    private static final double TRAVERSAL_COST = 1.0;
 
-    /** Bounds of node i at [6i, 6i+6): minX, minY, minZ, maxX, maxY, maxZ. */
-    final double[] nodeBounds;
-    /** Node i at [2i, 2i+2): leaf: first primitive, count; interior: second child, -(axis + 1). */
-    final int[] nodeData;
+    /** Words per interior node in {@link #nodes}. */
+    static final int NODE_STRIDE = 16;
+    /** Offset of the second child's box in a node; the first child's box is at offset 0. */
+    static final int SECOND_BOX = 6;
+    /** Offsets of the first child's link and count (int bits); the second child's follow at +2 and +3. */
+    static final int FIRST_LINK = 12, FIRST_COUNT = 13;
+
+    /**
+     * Interior node i at [16i, 16i+16): minX, minY, minZ, maxX, maxY, maxZ of child 0, the same of child 1, then
+     * link and count of child 0 and of child 1 stored as float bits ({@link Float#intBitsToFloat}; the values are
+     * non-negative ints, so no NaN pattern arises).
+     */
+    final float[] nodes;
+    /** The root's box (rounded outward) and the root as a child: a leaf if {@link #rootCount} is positive. */
+    final float[] rootBounds = new float[6];
+
+    final int rootLink, rootCount;
+    /** Split axis of each interior node (for inspection only). */
+    private final byte[] axes;
     /** The primitives in leaf order: entry k is the original index of the k-th primitive. */
     final int[] order;
 
@@ -31,11 +57,43 @@ public final class BVH {
 
     private BVH(Builder b) {
         this.nodeCount = b.nodeCount;
-        this.nodeBounds = Arrays.copyOf(b.bounds, 6 * nodeCount);
-        this.nodeData = Arrays.copyOf(b.data, 2 * nodeCount);
-        this.order = b.index;
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
+        this.order = b.index;
+        int interior = nodeCount - leafCount;
+        // Interior binary nodes keep their depth-first order, so a first child that is interior follows its parent.
+        int[] interiorIndex = new int[nodeCount];
+        for (int i = 0, next = 0; i < nodeCount; i++) {
+            interiorIndex[i] = b.data[2 * i + 1] > 0 ? -1 : next++;
+        }
+        nodes = new float[NODE_STRIDE * interior];
+        axes = new byte[interior];
+        for (int i = 0; i < nodeCount; i++) {
+            int info = b.data[2 * i + 1];
+            if (info > 0) continue;
+            int o = NODE_STRIDE * interiorIndex[i];
+            axes[interiorIndex[i]] = (byte) (-1 - info);
+            storeChild(b, i + 1, interiorIndex, nodes, o, o + FIRST_LINK);
+            storeChild(b, b.data[2 * i], interiorIndex, nodes, o + SECOND_BOX, o + FIRST_LINK + 2);
+        }
+        for (int a = 0; a < 3; a++) {
+            rootBounds[a] = floatBelow(b.bounds[a]);
+            rootBounds[3 + a] = floatAbove(b.bounds[3 + a]);
+        }
+        boolean rootIsLeaf = b.data[1] > 0;
+        rootLink = rootIsLeaf ? b.data[0] : 0;
+        rootCount = rootIsLeaf ? b.data[1] : 0;
+    }
+
+    /** Writes binary node {@code c} as a child: its box at {@code box}, its link and count at {@code link}. */
+    private static void storeChild(Builder b, int c, int[] interiorIndex, float[] nodes, int box, int link) {
+        for (int a = 0; a < 3; a++) {
+            nodes[box + a] = floatBelow(b.bounds[6 * c + a]);
+            nodes[box + 3 + a] = floatAbove(b.bounds[6 * c + 3 + a]);
+        }
+        boolean leaf = b.data[2 * c + 1] > 0;
+        nodes[link] = Float.intBitsToFloat(leaf ? b.data[2 * c] : interiorIndex[c]);
+        nodes[link + 1] = Float.intBitsToFloat(leaf ? b.data[2 * c + 1] : 0);
     }
 
     /**
@@ -46,18 +104,48 @@ public final class BVH {
      * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
+        validateSettings(bins, maxLeafSize);
+        if (primitiveBounds.length % 6 != 0) {
+            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
+        }
+        if (primitiveBounds.length == 0) {
+            throw new IllegalArgumentException("a BVH needs at least one primitive");
+        }
+        for (int b = 0; b < primitiveBounds.length; b += 6) {
+            for (int a = 0; a < 3; a++) {
+                // Written so that NaN fails too: a NaN box would poison every box above it.
+                if (!(primitiveBounds[b + a] <= primitiveBounds[b + 3 + a])) {
+                    throw new IllegalArgumentException("primitive " + b / 6 + " has an empty or NaN box on axis " + a
+                            + ": [" + primitiveBounds[b + a] + ", " + primitiveBounds[b + 3 + a] + "]");
+                }
+            }
+        }
+        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
+    }
+
+    /** The largest float not above {@code x}. */
+    static float floatBelow(double x) {
+        float f = (float) x;
+        return f > x ? Math.nextDown(f) : f;
+    }
+
+    /** The smallest float not below {@code x}. */
+    static float floatAbove(double x) {
+        float f = (float) x;
+        return f < x ? Math.nextUp(f) : f;
+    }
+
+    /** Throws unless {@code bins} is in [2, 256] and {@code maxLeafSize} in [1, 64]. */
+    static void validateSettings(int bins, int maxLeafSize) {
         if (bins < 2 || bins > 256) {
             throw new IllegalArgumentException("BVH bins must be in [2, 256], but was " + bins);
         }
         if (maxLeafSize < 1 || maxLeafSize > 64) {
             throw new IllegalArgumentException("BVH maxLeafSize must be in [1, 64], but was " + maxLeafSize);
         }
-        if (primitiveBounds.length % 6 != 0) {
-            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
-        }
-        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
     }
 
+    /** Nodes of the binary tree, leaves included. */
     public int nodeCount() {
         return nodeCount;
     }
@@ -77,26 +165,56 @@ public final class BVH {
 
     /** Bytes held by the node and order arrays. */
     public long bytes() {
-        return 8L * nodeBounds.length + 4L * nodeData.length + 4L * order.length;
+        return 4L * nodes.length + 4L * order.length + axes.length + 4L * rootBounds.length;
     }
 
-    /** Node {@code i} (0 is the root). */
+    /** The box around everything in the tree. */
+    public BoundingBox bounds() {
+        return box(rootBounds, 0);
+    }
+
+    /**
+     * Node {@code i} of the binary tree in depth-first order (0 is the root), for inspection and tests: it walks
+     * the whole tree, so prefer {@link #nodes()} to look at many.
+     */
     public BVHNode node(int i) {
         if (i < 0 || i >= nodeCount) {
             throw new IllegalArgumentException("node index must be in [0, " + nodeCount + "), but was " + i);
         }
-        int b = 6 * i;
-        BoundingBox box = new BoundingBox(
-                nodeBounds[b],
-                nodeBounds[b + 1],
-                nodeBounds[b + 2],
-                nodeBounds[b + 3],
-                nodeBounds[b + 4],
-                nodeBounds[b + 5]);
-        int info = nodeData[2 * i + 1];
-        return info > 0
-                ? new BVHNode(box, nodeData[2 * i], info, -1, -1)
-                : new BVHNode(box, -1, 0, nodeData[2 * i], -1 - info);
+        return nodes().get(i);
+    }
+
+    /** All nodes of the binary tree in depth-first order, leaves included (allocates; for inspection and tests). */
+    public List<BVHNode> nodes() {
+        List<BVHNode> list = new ArrayList<>(nodeCount);
+        collect(bounds(), rootLink, rootCount, list);
+        return list;
+    }
+
+    private void collect(BoundingBox box, int link, int count, List<BVHNode> list) {
+        if (count > 0) {
+            list.add(new BVHNode(box, link, count, -1, -1));
+            return;
+        }
+        int self = list.size();
+        list.add(null); // replaced once the second child's index is known
+        int o = NODE_STRIDE * link;
+        collect(box(nodes, o), childLink(o, 0), childCount(o, 0), list);
+        int second = list.size();
+        collect(box(nodes, o + SECOND_BOX), childLink(o, 1), childCount(o, 1), list);
+        list.set(self, new BVHNode(box, -1, 0, second, axes[link]));
+    }
+
+    private int childLink(int o, int child) {
+        return Float.floatToRawIntBits(nodes[o + FIRST_LINK + 2 * child]);
+    }
+
+    private int childCount(int o, int child) {
+        return Float.floatToRawIntBits(nodes[o + FIRST_COUNT + 2 * child]);
+    }
+
+    private static BoundingBox box(float[] f, int o) {
+        return new BoundingBox(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5]);
     }
 
     /** Original index of the primitive at position {@code k} of the leaf order. */

@@ -145,6 +145,80 @@ public final class BoundingBox {
         return tMin <= tMax;
     }
 
+    // ------------------------------------------------------- the BVH's kernel on outward-rounded float boxes
+
+    /**
+     * Bit a is set when the ray runs toward negative axis a (reciprocal direction below zero, -0 included), and
+     * {@link #FINITE_RECIPROCALS} when no direction component is zero or subnormal.
+     */
+    static int directionSigns(Ray ray) {
+        boolean finite = Double.isFinite(ray.invDx) && Double.isFinite(ray.invDy) && Double.isFinite(ray.invDz);
+        return (ray.invDx < 0 ? 1 : 0)
+                | (ray.invDy < 0 ? 2 : 0)
+                | (ray.invDz < 0 ? 4 : 0)
+                | (finite ? FINITE_RECIPROCALS : 0);
+    }
+
+    /**
+     * Where the ray enters the box at offset {@code o} within {@code (tMin, tMax)}, or {@link #MISS}. The slab test
+     * is conservative on both ends (see the class comment), and the ray's direction signs pick which plane of each
+     * slab is entered first, so no per-box sorting is needed.
+     *
+     * <p>For a ray with finite reciprocal directions no slab distance can be NaN, so branch-free min/max
+     * (intrinsics on x86) combine them: incoherent rays would mispredict most comparisons. A ray with a zero (or
+     * subnormal) direction component gets {@code 0 * inf = NaN} when it lies in a slab's plane; comparisons
+     * ignore the NaN there.
+     */
+    static double entry(float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
+        // Kept small on purpose: the JIT inlines it into the traversal loop only below 325 bytes of bytecode.
+        if ((signs & FINITE_RECIPROCALS) == 0) return entryWithInfiniteReciprocals(boxes, o, ray, signs, tMin, tMax);
+        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
+        double near = Math.max(
+                Math.max((boxes[o + nearX] - ray.ox) * ray.invDx, (boxes[o + nearY] - ray.oy) * ray.invDy),
+                (boxes[o + nearZ] - ray.oz) * ray.invDz);
+        double far = Math.min(
+                Math.min((boxes[o + 3 - nearX] - ray.ox) * ray.invDx, (boxes[o + 5 - nearY] - ray.oy) * ray.invDy),
+                (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz);
+        near -= Math.abs(near) * SLAB_SLACK;
+        far += Math.abs(far) * SLAB_SLACK;
+        return (near <= far) & (near <= tMax) & (far >= tMin) ? near : MISS;
+    }
+
+    /** {@link #entry} for rays with a zero direction component, whose slab distances may be NaN. */
+    private static double entryWithInfiniteReciprocals(
+            float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
+        int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
+        double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
+        double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
+        double ny = (boxes[o + nearY] - ray.oy) * ray.invDy;
+        double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
+        double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
+        double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
+        // "nx > near" is false for NaN, so a NaN slab leaves the interval unchanged.
+        double near = tMin, far = tMax;
+        if (nx > near) near = nx;
+        if (ny > near) near = ny;
+        if (nz > near) near = nz;
+        if (fx < far) far = fx;
+        if (fy < far) far = fy;
+        if (fz < far) far = fz;
+        near -= Math.abs(near) * SLAB_SLACK;
+        far += Math.abs(far) * SLAB_SLACK;
+        return near <= far ? near : MISS;
+    }
+
+    /** The entry distance of a missed box: no finite hit distance reaches it. */
+    static final double MISS = Double.POSITIVE_INFINITY;
+
+    /** Flag in the direction signs: all reciprocal directions are finite, so slab distances are never NaN. */
+    static final int FINITE_RECIPROCALS = 8;
+
+    /**
+     * Margin on slab distances as a fraction of their magnitude (the 2 gamma(3) of {@link #FAR_SCALE}), applied to
+     * both ends so it widens the slab whatever the sign of the distances.
+     */
+    private static final double SLAB_SLACK = 2 * primitives.Util.gamma(3);
+
     @Override
     public boolean equals(Object obj) {
         return obj instanceof BoundingBox b

@@ -63,6 +63,7 @@ public class Cylinder extends Tube {
         hit.t = t;
         hit.geometry = this;
         hit.part = part;
+        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
         return true;
     }
 

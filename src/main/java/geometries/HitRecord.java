@@ -33,8 +33,10 @@ public final class HitRecord {
     /** Per-axis bound on the absolute floating-point error of {@link #point}. */
     public double errorX, errorY, errorZ;
 
-    /** Traversal stack of the BVH (node indices). */
-    final int[] stack = new int[BVH.MAX_DEPTH + 2];
+    /** Traversal stack of the BVH: link and count of each postponed child, and where the ray enters its box. */
+    final int[] stack = new int[2 * (BVH.MAX_DEPTH + 2)];
+
+    final double[] stackEntry = new double[BVH.MAX_DEPTH + 2];
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */
     public long nodeVisits, primitiveTests;

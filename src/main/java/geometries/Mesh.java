@@ -87,8 +87,8 @@ public class Mesh extends Geometry {
 
     /** Whether triangle {@code i} has no area (it can never be hit). */
     public boolean isDegenerate(int i) {
-        return WatertightTriangle.normal(vertices, 3 * indices[3 * i], 3 * indices[3 * i + 1], 3 * indices[3 * i + 2])
-                == null;
+        return !WatertightTriangle.hasArea(
+                vertices, 3 * indices[3 * i], 3 * indices[3 * i + 1], 3 * indices[3 * i + 2]);
     }
 
     @Override

@@ -65,6 +65,7 @@ public class Plane extends Geometry {
         hit.t = t;
         hit.geometry = this;
         hit.part = 0;
+        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
         return true;
     }
 

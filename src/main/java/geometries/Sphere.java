@@ -73,6 +73,7 @@ public class Sphere extends Geometry {
         hit.t = t;
         hit.geometry = this;
         hit.part = 0;
+        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
         return true;
     }
 

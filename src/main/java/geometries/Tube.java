@@ -96,6 +96,7 @@ public class Tube extends Geometry {
         hit.t = t;
         hit.geometry = this;
         hit.part = 0;
+        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
         return true;
     }
 

@@ -171,6 +171,18 @@ public final class WatertightTriangle {
                 g * (Math.abs(b1 * e1z) + Math.abs(b2 * e2z)) + g2 * Math.abs(pz));
     }
 
+    /**
+     * Whether the triangle has area: its edge cross product, computed as {@link #normal} does, is not zero.
+     * Allocation-free, for checking every triangle of a big mesh.
+     */
+    static boolean hasArea(double[] v, int a, int b, int c) {
+        double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];
+        double e2x = v[c] - v[a], e2y = v[c + 1] - v[a + 1], e2z = v[c + 2] - v[a + 2];
+        return differenceOfProducts(e1y, e2z, e1z, e2y) != 0
+                || differenceOfProducts(e1z, e2x, e1x, e2z) != 0
+                || differenceOfProducts(e1x, e2y, e1y, e2x) != 0;
+    }
+
     /** The unit geometric normal (v1 - v0) x (v2 - v0) of a triangle, or null if it has no area. */
     static primitives.Vector normal(double[] v, int a, int b, int c) {
         double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];

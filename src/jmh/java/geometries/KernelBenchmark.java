@@ -1,0 +1,113 @@
+package geometries;
+
+import benchmark.RaySets;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * JMH micro-benchmarks of the BVH kernels, each reported as nanoseconds per operation: the ray-box slab test the
+ * traversal runs on float child boxes, the watertight ray-triangle test, and full closest-hit traversals of the
+ * 100k-triangle heightfield with coherent and incoherent rays. It lives in package {@code geometries} to reach the
+ * package-private kernels. Run with {@code mvn -q -Pjmh clean compile exec:exec}.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.NANOSECONDS)
+public class KernelBenchmark {
+    /** Rays per invocation: enough to average over hits and misses, few enough to stay in cache. */
+    static final int RAYS = 4096;
+
+    Accelerator heightfield;
+    Ray[] coherent;
+    Ray[] incoherent;
+    /** The root's two child boxes, as the traversal sees them. */
+    float[] boxes;
+    /** One triangle (9 doubles) that about half of the incoherent rays from above hit. */
+    double[] triangle = {-1, -1, 0, 1, -1, 0.1, 0, 1, -0.1};
+
+    HitRecord hit = new HitRecord();
+
+    @Setup
+    public void setUp() {
+        heightfield = Accelerator.build(Meshes.heightfield(224), true);
+        Ray[] image =
+                RaySets.pinhole(new Point(0, -0.5, 1.8), new Point(0, 0.05, 0), new Vector(0, 0, 1), 45, 1024, 1024);
+        // A 64 x 64 tile from the middle of the image: neighbouring rays, as a renderer's tile would trace them.
+        coherent = new Ray[RAYS];
+        for (int j = 0; j < 64; j++) {
+            for (int i = 0; i < 64; i++) coherent[64 * j + i] = image[(480 + j) * 1024 + 480 + i];
+        }
+        incoherent = RaySets.incoherent(heightfield.getBoundingBox(), RAYS, 20240613L);
+        boxes = java.util.Arrays.copyOf(heightfield.getBvh().nodes, 2 * 6);
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(2 * RAYS)
+    public double slabTest() {
+        double sum = 0;
+        for (Ray ray : incoherent) {
+            int signs = BoundingBox.directionSigns(ray);
+            double e0 = BoundingBox.entry(boxes, 0, ray, signs, 0, Double.POSITIVE_INFINITY);
+            double e1 = BoundingBox.entry(boxes, BVH.SECOND_BOX, ray, signs, 0, Double.POSITIVE_INFINITY);
+            sum += (e0 < BoundingBox.MISS ? 1 : 0) + (e1 < BoundingBox.MISS ? 1 : 0);
+        }
+        return sum;
+    }
+
+    /** The same boxes through the NaN-tolerant comparison path that rays with a zero direction component take. */
+    @Benchmark
+    @OperationsPerInvocation(2 * RAYS)
+    public double slabTestComparisons() {
+        double sum = 0;
+        for (Ray ray : incoherent) {
+            int signs = BoundingBox.directionSigns(ray) & ~BoundingBox.FINITE_RECIPROCALS;
+            double e0 = BoundingBox.entry(boxes, 0, ray, signs, 0, Double.POSITIVE_INFINITY);
+            double e1 = BoundingBox.entry(boxes, BVH.SECOND_BOX, ray, signs, 0, Double.POSITIVE_INFINITY);
+            sum += (e0 < BoundingBox.MISS ? 1 : 0) + (e1 < BoundingBox.MISS ? 1 : 0);
+        }
+        return sum;
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(RAYS)
+    public int triangleTest() {
+        int hits = 0;
+        for (Ray ray : incoherent) {
+            if (WatertightTriangle.intersect(
+                    triangle, 0, 3, 6, WatertightTriangle.ALL_EDGES_SHARED, ray, 0, Double.POSITIVE_INFINITY, hit)) {
+                hits++;
+            }
+        }
+        return hits;
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(RAYS)
+    public int traversalCoherent() {
+        return traverse(coherent);
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(RAYS)
+    public int traversalIncoherent() {
+        return traverse(incoherent);
+    }
+
+    private int traverse(Ray[] rays) {
+        int hits = 0;
+        for (Ray ray : rays) {
+            if (heightfield.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) hits++;
+        }
+        return hits;
+    }
+}

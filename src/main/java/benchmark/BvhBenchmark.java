@@ -1,0 +1,274 @@
+package benchmark;
+
+import geometries.Accelerator;
+import geometries.BoundingBox;
+import geometries.Intersectable;
+import geometries.Meshes;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * The BVH benchmark: for each workload, builds the scene's {@link Accelerator}, traces coherent (pinhole) and
+ * incoherent (random) closest-hit rays with the BVH on 1..N threads and by brute force on an evenly spread sample,
+ * and prints a Markdown table. Every timing is the median of several passes after a warm-up pass.
+ *
+ * <p>Run: {@code mvn -q -Pbenchmark compile exec:exec}; options go in {@code -Dbenchmark.args="..."}:
+ * {@code runs=5} (timed passes per figure), {@code threads=1,2}, {@code only=heightfield-100k,spheres-polygons}.
+ */
+public final class BvhBenchmark {
+    /** Pinhole resolution of the coherent rays. */
+    static final int IMAGE_SIZE = 1024;
+    /** Vertical field of view of the coherent rays, degrees. */
+    static final double FOV_DEGREES = 45;
+    /** Incoherent rays per workload. */
+    static final int INCOHERENT_RAYS = 1 << 20;
+
+    static final long SEED = 20240613L;
+    /** Primitive tests a brute-force pass may spend: sets the size of its ray sample. */
+    private static final double BRUTE_FORCE_BUDGET = 2e7;
+
+    private static final Vector UP_Z = new Vector(0, 0, 1);
+
+    /** The workloads; adding one is adding a line. */
+    static final List<Workload> WORKLOADS = List.of(
+            new Workload(
+                    "heightfield-100k",
+                    () -> Meshes.heightfield(224),
+                    new Point(0, -0.5, 1.8),
+                    new Point(0, 0.05, 0),
+                    UP_Z),
+            new Workload(
+                    "heightfield-1M",
+                    () -> Meshes.heightfield(708),
+                    new Point(0, -0.5, 1.8),
+                    new Point(0, 0.05, 0),
+                    UP_Z),
+            new Workload("icosphere-82k", () -> Meshes.icosphere(6), new Point(0, -3, 0), Point.ZERO, UP_Z),
+            new Workload("icosphere-1.3M", () -> Meshes.icosphere(8), new Point(0, -3, 0), Point.ZERO, UP_Z),
+            new Workload(
+                    "spheres-polygons",
+                    () -> BenchmarkScenes.spheresAndPolygons(200, 200, SEED),
+                    new Point(0, -45, 15),
+                    new Point(0, 0, 3),
+                    UP_Z));
+
+    private final int runs;
+    private final int[] threadCounts;
+    private final List<String> only;
+
+    private BvhBenchmark(int runs, int[] threadCounts, List<String> only) {
+        this.runs = runs;
+        this.threadCounts = threadCounts;
+        this.only = only;
+    }
+
+    public static void main(String[] args) {
+        int runs = 5;
+        int cores = Runtime.getRuntime().availableProcessors();
+        int[] threads = new int[cores];
+        for (int i = 0; i < cores; i++) threads[i] = i + 1;
+        List<String> only = List.of();
+        for (String arg : args) {
+            String[] kv = arg.split("=", 2);
+            if (kv.length != 2) throw new IllegalArgumentException("expected key=value, but got " + arg);
+            switch (kv[0]) {
+                case "runs" -> runs = Integer.parseInt(kv[1]);
+                case "threads" ->
+                    threads = Arrays.stream(kv[1].split(","))
+                            .mapToInt(Integer::parseInt)
+                            .toArray();
+                case "only" -> only = List.of(kv[1].split(","));
+                default -> throw new IllegalArgumentException("unknown option " + kv[0] + " (runs, threads, only)");
+            }
+        }
+        if (runs < 1) throw new IllegalArgumentException("runs must be at least 1, but was " + runs);
+        new BvhBenchmark(runs, threads, only).run();
+    }
+
+    private void run() {
+        System.out.printf(
+                Locale.ROOT,
+                "BVH benchmark: %d timed passes per figure (median), threads %s, %d cores, Java %s%n%n",
+                runs,
+                Arrays.toString(threadCounts),
+                Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"));
+        List<String> rows = new ArrayList<>();
+        List<String> notes = new ArrayList<>();
+        for (Workload workload : WORKLOADS) {
+            if (!only.isEmpty() && !only.contains(workload.name())) continue;
+            measure(workload, rows, notes);
+        }
+        System.out.println();
+        System.out.println(header());
+        rows.forEach(System.out::println);
+        System.out.println();
+        notes.forEach(System.out::println);
+    }
+
+    private String header() {
+        StringBuilder h = new StringBuilder("| workload | rays | primitives | build s, wall (CPU) |");
+        StringBuilder line = new StringBuilder("|---|---|--:|--:|");
+        for (int t : threadCounts) {
+            h.append(" ").append(t).append("T M rays/s/thread, wall (CPU) |");
+            line.append("--:|");
+        }
+        int last = threadCounts[threadCounts.length - 1];
+        h.append(" scaling ").append(last).append("T/").append(threadCounts[0]).append("T, wall (CPU) |");
+        h.append(" brute M rays/CPU-s | BVH/brute (1T, CPU) | nodes/ray | tests/ray | BVH B/prim | hit % |");
+        line.append("--:|--:|--:|--:|--:|--:|--:|");
+        return h + "\n" + line;
+    }
+
+    private void measure(Workload workload, List<String> rows, List<String> notes) {
+        System.out.println("== " + workload.name());
+        Intersectable scene = workload.scene().get();
+
+        double[] buildSeconds = new double[Math.max(3, runs)];
+        double[] buildCpuSeconds = new double[buildSeconds.length];
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        Accelerator bvh = null;
+        for (int i = 0; i < buildSeconds.length; i++) {
+            bvh = null; // let the previous build be collected before timing the next
+            long cpuStart = cpu.getCurrentThreadCpuTime();
+            long start = System.nanoTime();
+            bvh = Accelerator.build(scene, true);
+            buildSeconds[i] = (System.nanoTime() - start) * 1e-9;
+            buildCpuSeconds[i] = (cpu.getCurrentThreadCpuTime() - cpuStart) * 1e-9;
+        }
+        double build = median(buildSeconds);
+        double buildCpu = median(buildCpuSeconds);
+        Accelerator brute = Accelerator.build(scene, false);
+        int primitives = bvh.boundedPrimitiveCount() + bvh.unboundedPrimitiveCount();
+        double bytesPerPrimitive = (double) bvh.getBvh().bytes() / primitives;
+        notes.add(String.format(
+                Locale.ROOT,
+                "- %s: build %.3f s wall, %.3f s CPU (medians of %d); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
+                        + " (all flat arrays %.1f B/prim)",
+                workload.name(),
+                build,
+                buildCpu,
+                buildSeconds.length,
+                bvh.buildBreakdown(),
+                bvh.getBvh().nodeCount(),
+                bvh.getBvh().leafCount(),
+                bvh.getBvh().depth(),
+                bytesPerPrimitive,
+                (double) bvh.bytes() / primitives));
+
+        BoundingBox box = bvh.getBoundingBox();
+        Ray[] coherent =
+                RaySets.pinhole(workload.eye(), workload.target(), workload.up(), FOV_DEGREES, IMAGE_SIZE, IMAGE_SIZE);
+        rows.add(
+                row(workload, "coherent", coherent, bvh, brute, primitives, build, buildCpu, bytesPerPrimitive, notes));
+        coherent = null;
+        Ray[] incoherent = RaySets.incoherent(box, INCOHERENT_RAYS, SEED);
+        rows.add(row(
+                workload, "incoherent", incoherent, bvh, brute, primitives, build, buildCpu, bytesPerPrimitive, notes));
+    }
+
+    private String row(
+            Workload workload,
+            String kind,
+            Ray[] rays,
+            Accelerator bvh,
+            Accelerator brute,
+            int primitives,
+            double build,
+            double buildCpu,
+            double bytesPerPrimitive,
+            List<String> notes) {
+        StringBuilder row = new StringBuilder();
+        row.append(String.format(
+                Locale.ROOT, "| %s | %s | %,d | %.3f (%.3f) |", workload.name(), kind, primitives, build, buildCpu));
+        double[] perThread = new double[threadCounts.length];
+        double[] perCpuSecond = new double[threadCounts.length];
+        RayThroughput.Pass stats = null;
+        for (int c = 0; c < threadCounts.length; c++) {
+            int threads = threadCounts[c];
+            RayThroughput.trace(bvh, rays, threads); // warm-up
+            double[] seconds = new double[runs];
+            double[] cpuSeconds = new double[runs];
+            for (int r = 0; r < runs; r++) {
+                RayThroughput.Pass pass = RayThroughput.trace(bvh, rays, threads);
+                seconds[r] = pass.seconds();
+                cpuSeconds[r] = pass.cpuSeconds();
+                if (threads == 1 || stats == null) stats = pass;
+            }
+            perThread[c] = rays.length / median(seconds) / threads * 1e-6;
+            perCpuSecond[c] = rays.length / median(cpuSeconds) * 1e-6;
+            row.append(String.format(Locale.ROOT, " %.2f (%.2f) |", perThread[c], perCpuSecond[c]));
+            System.out.printf(
+                    Locale.ROOT,
+                    "   %-10s %dT: %.2f M rays/s/thread, %.2f M rays per CPU second (wall s %s)%n",
+                    kind,
+                    threads,
+                    perThread[c],
+                    perCpuSecond[c],
+                    Arrays.toString(Arrays.stream(seconds)
+                            .mapToObj(s -> String.format(Locale.ROOT, "%.3f", s))
+                            .toArray()));
+        }
+        int last = threadCounts.length - 1;
+        double scaling = perThread[last] * threadCounts[last] / (perThread[0] * threadCounts[0]);
+        // What the threads would give with the cores to themselves: CPU-time throughput times the thread ratio.
+        double cpuScaling = perCpuSecond[last] * threadCounts[last] / (perCpuSecond[0] * threadCounts[0]);
+
+        // Brute force on an evenly spread sample sized to the budget; it must agree with the BVH exactly.
+        int stride = (int) Math.max(1, Math.ceil(rays.length * (double) primitives / BRUTE_FORCE_BUDGET));
+        Ray[] sample = RaySets.sample(rays, stride);
+        RayThroughput.trace(brute, sample, 1); // warm-up
+        double[] seconds = new double[runs];
+        for (int r = 0; r < runs; r++) {
+            seconds[r] = RayThroughput.trace(brute, sample, 1).cpuSeconds();
+        }
+        double bruteRate = sample.length / median(seconds) * 1e-6; // per CPU second, like the BVH figure it divides
+        int disagreements = disagreements(bvh, brute, sample);
+        if (disagreements > 0) {
+            notes.add("- WARNING " + workload.name() + " " + kind + ": BVH and brute force disagree on " + disagreements
+                    + " of " + sample.length + " sampled rays");
+        }
+        row.append(String.format(
+                Locale.ROOT,
+                " %.2fx (%.2fx) | %.3g | %,.0fx | %.1f | %.1f | %.0f | %.1f |",
+                scaling,
+                cpuScaling,
+                bruteRate,
+                perCpuSecond[0] / bruteRate,
+                (double) stats.nodeVisits() / rays.length,
+                (double) stats.primitiveTests() / rays.length,
+                bytesPerPrimitive,
+                100.0 * stats.hits() / rays.length));
+        System.out.printf(
+                Locale.ROOT,
+                "   %-10s brute force on %d sampled rays: %.3g M rays per CPU second%n",
+                kind,
+                sample.length,
+                bruteRate);
+        return row.toString();
+    }
+
+    private static int disagreements(Accelerator a, Accelerator b, Ray[] rays) {
+        double[] ta = RayThroughput.distances(a, rays);
+        double[] tb = RayThroughput.distances(b, rays);
+        int count = 0;
+        for (int i = 0; i < rays.length; i++) {
+            if (Double.doubleToLongBits(ta[i]) != Double.doubleToLongBits(tb[i])) count++;
+        }
+        return count;
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+}

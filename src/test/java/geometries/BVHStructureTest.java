@@ -1,0 +1,86 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** The flattened BVH as its node view shows it: a sound tree over exactly the primitives it was given. */
+class BVHStructureTest {
+    @ParameterizedTest(name = "{0} boxes, {1} bins, leaves of at most {2}")
+    @CsvSource({"1, 16, 4", "2, 2, 1", "500, 16, 4", "500, 32, 16", "2000, 8, 2"})
+    void leavesPartitionThePrimitivesAndBoxesNest(int count, int bins, int maxLeafSize) {
+        double[] boxes = randomBoxes(count, new SplittableRandom(count));
+        BVH bvh = BVH.build(boxes, bins, maxLeafSize);
+        List<BVHNode> nodes = bvh.nodes();
+        assertEquals(bvh.nodeCount(), nodes.size());
+        assertEquals(count, bvh.primitiveCount());
+
+        int[] seen = new int[count];
+        int leaves = 0;
+        for (int i = 0; i < nodes.size(); i++) {
+            BVHNode node = nodes.get(i);
+            if (node.isLeaf()) {
+                leaves++;
+                for (int k = node.firstPrimitive(); k < node.firstPrimitive() + node.primitiveCount(); k++) {
+                    int p = bvh.primitiveAt(k);
+                    seen[p]++;
+                    assertTrue(contains(node.bounds(), boxes, p), "leaf " + i + " holds primitive " + p);
+                }
+            } else {
+                // Depth-first: the first child follows its parent.
+                assertTrue(node.secondChild() > i + 1 && node.axis() >= 0 && node.axis() < 3, "node " + i);
+                assertTrue(encloses(node.bounds(), nodes.get(i + 1).bounds()), "first child of " + i);
+                assertTrue(encloses(node.bounds(), nodes.get(node.secondChild()).bounds()), "second child of " + i);
+            }
+        }
+        assertEquals(bvh.leafCount(), leaves);
+        for (int p = 0; p < count; p++) assertEquals(1, seen[p], "primitive " + p + " in exactly one leaf");
+        assertEquals(nodes.get(0).bounds(), bvh.bounds());
+    }
+
+    @Test
+    void coincidentCentroidsAreSplitByCountSoLeavesStaySmall() {
+        double[] boxes = new double[6 * 100];
+        for (int p = 0; p < 100; p++) System.arraycopy(new double[] {0, 0, 0, 1, 1, 1}, 0, boxes, 6 * p, 6);
+        BVH bvh = BVH.build(boxes, 16, 4);
+        for (BVHNode node : bvh.nodes()) {
+            assertTrue(!node.isLeaf() || node.primitiveCount() <= 4, node.toString());
+        }
+    }
+
+    private static double[] randomBoxes(int count, SplittableRandom random) {
+        double[] boxes = new double[6 * count];
+        for (int p = 0; p < count; p++) {
+            for (int a = 0; a < 3; a++) {
+                double lo = 100 * random.nextDouble() - 50;
+                boxes[6 * p + a] = lo;
+                boxes[6 * p + 3 + a] = lo + random.nextDouble() * (random.nextInt(10) == 0 ? 30 : 2);
+            }
+        }
+        return boxes;
+    }
+
+    private static boolean contains(BoundingBox b, double[] boxes, int p) {
+        int o = 6 * p;
+        return b.minX <= boxes[o]
+                && b.minY <= boxes[o + 1]
+                && b.minZ <= boxes[o + 2]
+                && b.maxX >= boxes[o + 3]
+                && b.maxY >= boxes[o + 4]
+                && b.maxZ >= boxes[o + 5];
+    }
+
+    private static boolean encloses(BoundingBox outer, BoundingBox inner) {
+        return outer.minX <= inner.minX
+                && outer.minY <= inner.minY
+                && outer.minZ <= inner.minZ
+                && outer.maxX >= inner.maxX
+                && outer.maxY >= inner.maxY
+                && outer.maxZ >= inner.maxZ;
+    }
+}

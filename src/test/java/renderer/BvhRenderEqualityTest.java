@@ -1,0 +1,89 @@
+package renderer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import geometries.Meshes;
+import geometries.Plane;
+import geometries.Polygon;
+import geometries.Sphere;
+import lighting.AmbientLight;
+import lighting.DirectionalLight;
+import lighting.PointLight;
+import org.junit.jupiter.api.Test;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point;
+import primitives.Vector;
+import scene.Scene;
+
+/**
+ * The per-render BVH switch changes speed only: a scene of meshes, spheres, a polygon and a plane, with soft
+ * shadows, glass and a mirror, renders to the same pixels bit for bit with the BVH on two threads and by brute
+ * force on one.
+ */
+class BvhRenderEqualityTest {
+    @Test
+    void bvhAndBruteForceRenderIdenticalImages() {
+        ImageWriter withBvh = render(true, 2);
+        ImageWriter bruteForce = render(false, 1);
+        int lit = 0;
+        for (int y = 0; y < withBvh.getNy(); y++) {
+            for (int x = 0; x < withBvh.getNx(); x++) {
+                Color a = withBvh.getPixel(x, y), b = bruteForce.getPixel(x, y);
+                String where = "pixel (" + x + ", " + y + ")";
+                assertEquals(Double.doubleToLongBits(b.getR()), Double.doubleToLongBits(a.getR()), where);
+                assertEquals(Double.doubleToLongBits(b.getG()), Double.doubleToLongBits(a.getG()), where);
+                assertEquals(Double.doubleToLongBits(b.getB()), Double.doubleToLongBits(a.getB()), where);
+                if (a.getR() + a.getG() + a.getB() > 0) lit++;
+            }
+        }
+        assertTrue(lit > withBvh.getNx() * withBvh.getNy() / 2, "the image shows the scene, not just black");
+    }
+
+    private static ImageWriter render(boolean useBvh, int threads) {
+        Scene scene = new Scene("bvh-equality")
+                .setBackground(new Color(10, 10, 20))
+                .setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.1));
+        scene.geometries.add(
+                new Plane(new Point(0, 0, -0.3), Vector.AXIS_Z)
+                        .setEmission(new Color(30, 30, 30))
+                        .setMaterial(new Material().setKd(0.5).setKr(0.2)),
+                Meshes.heightfield(16)
+                        .setEmission(new Color(20, 60, 20))
+                        .setMaterial(new Material().setKd(0.6).setKs(0.3).setShininess(30)),
+                Meshes.icosphere(3)
+                        .setEmission(new Color(20, 20, 60))
+                        .setMaterial(new Material()
+                                .setKd(0.2)
+                                .setKs(0.5)
+                                .setShininess(100)
+                                .setKt(0.5)),
+                new Sphere(new Point(1.2, 0.8, 0.5), 0.4)
+                        .setEmission(new Color(60, 10, 10))
+                        .setMaterial(new Material().setKd(0.3).setKr(0.6)),
+                new Polygon(
+                                new Point(-1.5, 1, -0.3),
+                                new Point(-0.5, 1.5, -0.3),
+                                new Point(-0.5, 1.5, 1),
+                                new Point(-1.5, 1, 1))
+                        .setEmission(new Color(40, 40, 10))
+                        .setMaterial(new Material().setKd(0.5)));
+        scene.lights.add(new PointLight(new Color(300, 280, 250), new Point(-2, -2, 4))
+                .setRadius(0.3)
+                .setNumSamples(4));
+        scene.lights.add(new DirectionalLight(new Color(60, 60, 80), new Vector(0.3, 1, -1)));
+        Camera camera = Camera.getBuilder()
+                .setLocation(new Point(0, -4, 2.5))
+                .setDirection(new Point(0, 0, 0), Vector.AXIS_Z)
+                .setVpDistance(1)
+                .setVpSize(1.2, 0.75)
+                .setResolution(48, 30)
+                .setRayTracer(scene, RayTracerType.SIMPLE)
+                .setBvh(useBvh)
+                .setThreads(threads)
+                .build();
+        camera.renderImage();
+        return camera.getImage();
+    }
+}
