@@ -80,6 +80,35 @@ public class Mesh extends Geometry {
         return vertices.length / 3;
     }
 
+    /** A copy of the vertex coordinates: x, y, z per vertex. */
+    public double[] getVertices() {
+        return vertices.clone();
+    }
+
+    /** A copy of the vertex indices: three per triangle. */
+    public int[] getIndices() {
+        return indices.clone();
+    }
+
+    /** A copy of the per-vertex normals, or null for a flat-shaded mesh. */
+    public double[] getNormals() {
+        return normals == null ? null : normals.clone();
+    }
+
+    /** This mesh scaled by {@code scale} about the origin, then moved by (dx, dy, dz), with the same material. */
+    public Mesh transformed(double scale, double dx, double dy, double dz) {
+        Util.requirePositive(scale, "mesh scale");
+        double[] moved = new double[vertices.length];
+        for (int i = 0; i < moved.length; i += 3) {
+            moved[i] = vertices[i] * scale + dx;
+            moved[i + 1] = vertices[i + 1] * scale + dy;
+            moved[i + 2] = vertices[i + 2] * scale + dz;
+        }
+        Mesh mesh = new Mesh(moved, indices, normals);
+        mesh.setMaterial(getMaterial()).setEmission(getEmission());
+        return mesh;
+    }
+
     /** Vertex {@code i} of the shared array. */
     public Point vertex(int i) {
         return new Point(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);

@@ -35,6 +35,27 @@ public final class RobustnessReport {
             out.append(" |\n");
         }
 
+        out.append("\n### Leaks: rays from inside a closed icosphere (level 3) aimed at its vertices and edges\n\n");
+        out.append("| placement | rays | leaks (watertight, ours) | leaks (textbook Moller-Trumbore) |\n");
+        out.append("|---|---:|---:|---:|\n");
+        for (double offset : new double[] {0, 1e6}) {
+            for (double scale : new double[] {1, 1e3}) {
+                LeakProbe.Result r = LeakProbe.run(3, scale, offset, Math.max(2, probes / 2500), seed, true);
+                if (!r.equals(LeakProbe.run(3, scale, offset, Math.max(2, probes / 2500), seed, false))) {
+                    disagreements++;
+                }
+                out.append(String.format(
+                        Locale.ROOT,
+                        "| radius %.0e, %.0e from the origin | %,d | %d | %,d (%.1f%%) |%n",
+                        scale,
+                        offset,
+                        r.rays(),
+                        r.leaks(),
+                        r.textbookLeaks(),
+                        100.0 * r.textbookLeaks() / r.rays()));
+            }
+        }
+
         out.append("\n### Thin gaps: rays leaving a unit sphere that miss a concentric sphere 1e-6 larger\n\n");
         out.append("| spawning | distance 1 | 1e3 | 1e6 | 1e9 |\n|---|---:|---:|---:|---:|\n");
         out.append("| error-bounded offset (ours): escaped + self-hits");
