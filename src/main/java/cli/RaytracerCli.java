@@ -9,7 +9,8 @@ import sceneio.SceneFileException;
  * The {@code raytracer} command line: {@code raytracer render scene.json -o out.png}, {@code --help},
  * {@code --version}. Exit codes are in {@link ExitCodes}: 0 success, 1 render failure, 2 bad input.
  *
- * <p>To add a subcommand (e.g. {@code benchmark}, {@code report}), write a picocli {@code @Command} class that
+ * <p>Subcommands: {@code render}, {@code report} (accuracy against time), {@code robustness} (hard-case metrics),
+ * {@code benchmark bvh|planning|effects}. To add one, write a picocli {@code @Command} class that
  * implements {@code Callable<Integer>} and add it to {@code subcommands} below. Throw {@link SceneFileException}
  * or {@link BadInputException} for bad input; anything else is reported as a failure (exit 1).
  */
@@ -18,7 +19,13 @@ import sceneio.SceneFileException;
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Renders JSON scene files (docs/SCENE-FORMAT.md) into PNG images.",
-        subcommands = {RenderCommand.class, CommandLine.HelpCommand.class},
+        subcommands = {
+            RenderCommand.class,
+            ReportCommand.class,
+            RobustnessCommand.class,
+            BenchmarkCommand.class,
+            CommandLine.HelpCommand.class
+        },
         exitCodeOnInvalidInput = ExitCodes.BAD_INPUT,
         exitCodeOnExecutionException = ExitCodes.RENDER_FAILED)
 public final class RaytracerCli implements Runnable {

@@ -54,7 +54,8 @@ public final class AccuracyReport {
                 + " measurements)");
     }
 
-    static Options parse(String[] args) {
+    /** Options from command-line arguments; an unknown or malformed option is an IllegalArgumentException. */
+    public static Options parse(String[] args) {
         Options o = Options.defaults();
         int width = o.width(), height = o.height(), repeats = o.repeats();
         int[] counts = o.counts();

@@ -1,0 +1,45 @@
+package cli;
+
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code raytracer benchmark bvh|planning|effects [args]}: the benchmarks, each printing a Markdown table.
+ * {@code bvh} takes {@code runs=N threads=1,2 only=workload,...} (see docs/BENCHMARKS.md; it wants a large heap,
+ * so {@code mvn -Pbenchmark} runs it in a JVM of its own); {@code planning} takes the number of runs;
+ * {@code effects} takes runs, width and height.
+ */
+@Command(
+        name = "benchmark",
+        mixinStandardHelpOptions = true,
+        description = "Runs a benchmark: bvh (BVH on/off, threads), planning (effect planning on/off), "
+                + "effects (time factor of each sampled effect).")
+public final class BenchmarkCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "bvh|planning|effects", description = "which benchmark")
+    private String which;
+
+    @Parameters(index = "1..*", paramLabel = "args", description = "arguments of that benchmark")
+    private List<String> args = List.of();
+
+    @Override
+    public Integer call() throws BadInputException {
+        String[] rest = args.toArray(new String[0]);
+        try {
+            switch (which) {
+                case "bvh" -> benchmark.BvhBenchmark.main(rest);
+                case "planning" -> benchmark.PlanningBenchmark.main(rest);
+                case "effects" -> app.FeatureGallery.main(rest);
+                default ->
+                    throw new BadInputException(
+                            "benchmark: unknown benchmark '" + which + "'; allowed: bvh, planning, effects");
+            }
+        } catch (NumberFormatException e) {
+            throw new BadInputException("benchmark " + which + ": " + e.getMessage() + " is not a number");
+        } catch (IllegalArgumentException e) {
+            throw new BadInputException("benchmark " + which + ": " + e.getMessage());
+        }
+        return ExitCodes.OK;
+    }
+}
