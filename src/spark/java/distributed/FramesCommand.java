@@ -70,7 +70,14 @@ public final class FramesCommand implements Callable<Integer> {
 
         long start = System.nanoTime();
         AtomicInteger written = new AtomicInteger();
-        try (JavaSparkContext spark = SparkContexts.open(master)) {
+        FailedAttempts failed = new FailedAttempts();
+        double seconds;
+        String master;
+        int cores;
+        try (JavaSparkContext spark = SparkContexts.open(this.master)) {
+            spark.sc().addSparkListener(failed);
+            master = spark.master();
+            cores = spark.defaultParallelism();
             long jobStart = System.nanoTime();
             SparkFrameRender.render(
                     spark,
@@ -81,17 +88,7 @@ public final class FramesCommand implements Callable<Integer> {
                         written.incrementAndGet();
                     },
                     FaultInjection.from(spark.getConf()));
-            out.println("wrote " + path.frameCount() + " frames: " + files.file(0) + " .. "
-                    + files.file(path.frameCount() - 1));
-            out.printf(
-                    Locale.ROOT,
-                    "spark: %d frames rendered in %.3f s on %s (%d cores); %.3f s with Spark's start%n",
-                    path.frameCount(),
-                    (System.nanoTime() - jobStart) * 1e-9,
-                    spark.master(),
-                    spark.defaultParallelism(),
-                    (System.nanoTime() - start) * 1e-9);
-            out.flush();
+            seconds = (System.nanoTime() - jobStart) * 1e-9;
         } catch (RuntimeException | Error e) {
             spec.commandLine()
                     .getErr()
@@ -99,6 +96,20 @@ public final class FramesCommand implements Callable<Integer> {
                             + " frames (each written frame is complete)");
             throw e;
         }
+        // After the context stopped, so every task event has been counted.
+        out.println("wrote " + path.frameCount() + " frames: " + files.file(0) + " .. "
+                + files.file(path.frameCount() - 1));
+        out.printf(
+                Locale.ROOT,
+                "spark: %d frames rendered in %.3f s on %s (%d cores), %d failed task attempts retried;"
+                        + " %.3f s with Spark's start and stop%n",
+                path.frameCount(),
+                seconds,
+                master,
+                cores,
+                failed.count(),
+                (System.nanoTime() - start) * 1e-9);
+        out.flush();
         return ExitCodes.OK;
     }
 }

@@ -80,26 +80,36 @@ public final class TilesCommand implements Callable<Integer> {
         boolean existed = Files.exists(target);
 
         long start = System.nanoTime();
-        try (JavaSparkContext spark = SparkContexts.open(master)) {
+        FailedAttempts failed = new FailedAttempts();
+        double seconds;
+        String master;
+        int cores;
+        try (JavaSparkContext spark = SparkContexts.open(this.master)) {
+            spark.sc().addSparkListener(failed);
+            master = spark.master();
+            cores = spark.defaultParallelism();
             long jobStart = System.nanoTime();
             ImageWriter image = SparkTileRender.render(spark, bundle, split, FaultInjection.from(spark.getConf()));
-            double job = (System.nanoTime() - jobStart) * 1e-9;
+            seconds = (System.nanoTime() - jobStart) * 1e-9;
             image.writeToImage(target);
-            out.println("wrote " + target);
-            out.printf(
-                    Locale.ROOT,
-                    "spark: %d tiles (%s) rendered in %.3f s on %s (%d cores); %.3f s with Spark's start%n",
-                    split.size(),
-                    grid,
-                    job,
-                    spark.master(),
-                    spark.defaultParallelism(),
-                    (System.nanoTime() - start) * 1e-9);
-            out.flush();
         } catch (RuntimeException | Error e) {
             err.println("render failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
             throw e;
         }
+        // After the context stopped, so every task event has been counted.
+        out.println("wrote " + target);
+        out.printf(
+                Locale.ROOT,
+                "spark: %d tiles (%s) rendered in %.3f s on %s (%d cores), %d failed task attempts retried;"
+                        + " %.3f s with Spark's start and stop%n",
+                split.size(),
+                grid,
+                seconds,
+                master,
+                cores,
+                failed.count(),
+                (System.nanoTime() - start) * 1e-9);
+        out.flush();
         return ExitCodes.OK;
     }
 }
