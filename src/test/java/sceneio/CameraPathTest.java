@@ -144,6 +144,15 @@ class CameraPathTest {
     }
 
     @Test
+    void theShippedPathLoadsOnItsScene() throws Exception {
+        CameraPath path = CameraPathLoader.load(
+                Path.of("scenes/paths/soft-shadows-orbit.json"), SceneLoader.read(Path.of("scenes/soft-shadows.json")));
+        assertEquals(24, path.frameCount());
+        assertEquals(Interpolation.SMOOTH, path.getInterpolation());
+        assertEquals(new Vec3(300, 0, 120), path.pose(23).location());
+    }
+
+    @Test
     void badFilesNameThePlaceAndWhatIsAllowed() throws IOException {
         assertEquals(
                 dir.resolve("path.json") + ":1:1: $.keyframes: a camera path needs keyframes: \"keyframes\":"
