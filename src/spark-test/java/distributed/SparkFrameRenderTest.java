@@ -126,6 +126,32 @@ class SparkFrameRenderTest {
     }
 
     @Test
+    void aFailureOnTheDriverStopsTheRenderAndSubmitsNoMoreFrames(JavaSparkContext spark) throws Exception {
+        List<Integer> delivered = new ArrayList<>();
+        try (TaskEvents events = TaskEvents.attach(spark)) {
+            IOException e = assertThrows(
+                    IOException.class,
+                    () -> SparkFrameRender.render(
+                            spark,
+                            scene,
+                            path,
+                            (frame, png) -> {
+                                if (frame == 2) throw new IOException("disk full");
+                                delivered.add(frame);
+                            },
+                            FaultInjection.NONE));
+            assertEquals("disk full", e.getMessage());
+            assertEquals(List.of(0, 1), delivered, "frames before the failure were delivered, none after");
+            // local[2]: 4 frames in flight at first, one more after each of frames 0 and 1 was delivered; the
+            // frames still in flight when frame 2 failed are cancelled. A control job after them: its start comes
+            // after any frame job's start (the scheduler handles submissions in order).
+            assertEquals(3, spark.parallelize(List.of(1, 2, 3)).count(), "the context still works");
+            events.awaitJobsEnded(7);
+            assertEquals(7, events.jobsStarted(), "6 frame jobs and the control job; none after the failure");
+        }
+    }
+
+    @Test
     void aBadPathFailsOnTheDriverBeforeAnyJob(JavaSparkContext spark) throws Exception {
         // Frame 1 of 0..2 passes through the target: the camera would look at its own location.
         Path bad = path.resolveSibling("through.json");
