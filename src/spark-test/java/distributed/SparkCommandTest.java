@@ -100,6 +100,27 @@ class SparkCommandTest {
     }
 
     @Test
+    void badOverridesGiveTheCliMessage() {
+        for (String[] option : new String[][] {{"--width", "0"}, {"--samples", "2000000"}, {"--bvh", "maybe"}}) {
+            Result render = cli(
+                    "render",
+                    valid.toString(),
+                    option[0],
+                    option[1],
+                    "-o",
+                    dir.resolve("o.png").toString());
+            assertEquals(2, render.code(), render.err());
+            Result tiles = spark("tiles", valid.toString(), option[0], option[1]);
+            Result frames = spark("frames", valid.toString(), "--path", path.toString(), option[0], option[1]);
+            // picocli's own rejections (an unknown enum value) end with the command's usage, which differs.
+            assertEquals(render.err().lines().findFirst(), tiles.err().lines().findFirst(), option[0]);
+            assertEquals(render.err().lines().findFirst(), frames.err().lines().findFirst(), option[0]);
+            assertEquals(2, tiles.code());
+            assertEquals(2, frames.code());
+        }
+    }
+
+    @Test
     void badTilesAreReportedBeforeSparkStarts() {
         Result zero = spark("tiles", valid.toString(), "--tiles", "0");
         assertEquals(new Result(2, "error: --tiles must be at least 1, but was 0\n"), zero);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import cli.RenderOverrides;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -36,6 +37,8 @@ import sceneio.model.SceneDocument;
  */
 @ExtendWith(LocalSpark.class)
 class SparkFrameRenderTest {
+    private static final RenderOverrides NONE = new RenderOverrides();
+
     private static final String PATH = """
             {
               "interpolation": "smooth",
@@ -83,6 +86,7 @@ class SparkFrameRenderTest {
         int count = SparkFrameRender.render(
                 spark,
                 scene,
+                NONE,
                 path,
                 (frame, png) -> {
                     assertFalse(frames.containsKey(frame), "frame " + frame + " delivered once");
@@ -134,6 +138,7 @@ class SparkFrameRenderTest {
                     () -> SparkFrameRender.render(
                             spark,
                             scene,
+                            NONE,
                             path,
                             (frame, png) -> {
                                 if (frame == 2) throw new IOException("disk full");
@@ -163,7 +168,7 @@ class SparkFrameRenderTest {
         try (TaskEvents events = TaskEvents.attach(spark)) {
             SceneFileException e = assertThrows(
                     SceneFileException.class,
-                    () -> SparkFrameRender.render(spark, scene, bad, (f, png) -> {}, FaultInjection.NONE));
+                    () -> SparkFrameRender.render(spark, scene, NONE, bad, (f, png) -> {}, FaultInjection.NONE));
             assertTrue(e.getMessage().contains("at frame 1 "), e.getMessage());
             assertEquals(3, spark.parallelize(List.of(1, 2, 3)).count());
             events.awaitJobsEnded(1);

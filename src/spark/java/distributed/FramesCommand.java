@@ -1,6 +1,7 @@
 package distributed;
 
 import cli.ExitCodes;
+import cli.RenderOverrides;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -8,18 +9,19 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.apache.spark.api.java.JavaSparkContext;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import sceneio.CameraPath;
 import sceneio.CameraPathLoader;
-import sceneio.SceneLoader;
 
 /**
- * {@code raytracer-spark frames scene.json --path path.json [-o frames/x-%04d.png] [--master URL]}: renders every
- * frame of a camera path on Spark, one task per frame, and writes numbered PNGs as the frames arrive. The scene,
- * the path (every pose) and the output are checked before Spark starts.
+ * {@code raytracer-spark frames scene.json --path path.json [-o frames/x-%04d.png] [--master URL] [--width W]
+ * [--height H] [--samples N] [--bvh on|off]}: renders every frame of a camera path on Spark, one task per frame,
+ * and writes numbered PNGs as the frames arrive. The scene (with the overrides), the path (every pose) and the
+ * output are checked before Spark starts.
  */
 @Command(
         name = "frames",
@@ -53,6 +55,9 @@ public final class FramesCommand implements Callable<Integer> {
                     + " (default: images/<scene name>-%%04d.png; the folder must exist)")
     private String output;
 
+    @Mixin
+    private RenderOverrides overrides = new RenderOverrides();
+
     @Option(
             names = "--master",
             paramLabel = "URL",
@@ -62,8 +67,9 @@ public final class FramesCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        SceneBundle bundle = SceneBundle.read(sceneFile); // a bad scene fails here, before Spark starts
-        CameraPath path = CameraPathLoader.load(pathFile, SceneLoader.parse(bundle.text(), bundle.name()));
+        overrides.check();
+        SceneBundle bundle = SceneBundle.read(sceneFile, overrides); // a bad scene fails here, before Spark starts
+        CameraPath path = CameraPathLoader.load(pathFile, bundle.document());
         FramePattern files = output != null
                 ? FramePattern.check(output, path.frameCount(), false)
                 : FramePattern.check("images/" + bundle.sceneName() + "-%04d.png", path.frameCount(), true);

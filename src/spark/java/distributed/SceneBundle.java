@@ -1,5 +1,6 @@
 package distributed;
 
+import cli.RenderOverrides;
 import java.io.IOException;
 import java.io.Serializable;
 import java.io.UncheckedIOException;
@@ -32,6 +33,7 @@ public final class SceneBundle implements Serializable {
 
     private final String name;
     private final String text;
+    private final RenderOverrides overrides;
     private final String sceneName;
     private final int width, height;
     /** The scene file's folder, relative to the common folder of the scene and its OBJ files ("" if the same). */
@@ -40,9 +42,15 @@ public final class SceneBundle implements Serializable {
     private final LinkedHashMap<String, byte[]> files;
 
     private SceneBundle(
-            String name, LoadedScene loaded, String text, String sceneFolder, LinkedHashMap<String, byte[]> files) {
+            String name,
+            LoadedScene loaded,
+            String text,
+            RenderOverrides overrides,
+            String sceneFolder,
+            LinkedHashMap<String, byte[]> files) {
         this.name = name;
         this.text = text;
+        this.overrides = overrides;
         this.sceneName = loaded.scene().getName();
         this.width = loaded.camera().getNx();
         this.height = loaded.camera().getNy();
@@ -50,12 +58,19 @@ public final class SceneBundle implements Serializable {
         this.files = files;
     }
 
-    /**
-     * Loads the scene file on the driver, as the CLI does (so a bad file fails here, with the CLI's message,
-     * before any task), and bundles its text and OBJ files.
-     */
+    /** {@link #read(Path, RenderOverrides)} without overrides. */
     public static SceneBundle read(Path sceneFile) throws SceneFileException {
-        LoadedScene loaded = SceneLoader.load(sceneFile); // all validation, with file:line:col messages
+        return read(sceneFile, new RenderOverrides());
+    }
+
+    /**
+     * Loads the scene file on the driver with the overrides applied, exactly as {@code raytracer render} does (so
+     * a bad file fails here, with the CLI's message, before any task), and bundles its text, the overrides and the
+     * OBJ files. Executors apply the same overrides to the same text.
+     */
+    public static SceneBundle read(Path sceneFile, RenderOverrides overrides) throws SceneFileException {
+        // All validation, with file:line:col messages: the CLI's calls, in the CLI's order.
+        LoadedScene loaded = SceneLoader.build(overrides.apply(SceneLoader.read(sceneFile)), sceneFile);
         String text;
         try {
             text = Files.readString(sceneFile);
@@ -78,7 +93,7 @@ public final class SceneBundle implements Serializable {
                 throw new UncheckedIOException("cannot read " + obj + " again: " + e.getMessage(), e);
             }
         }
-        return new SceneBundle(sceneFile.toString(), loaded, text, slashes(root.relativize(folder)), files);
+        return new SceneBundle(sceneFile.toString(), loaded, text, overrides, slashes(root.relativize(folder)), files);
     }
 
     /** The OBJ files named by relative path in {@code geometries} and its groups, resolved against the folder. */
@@ -109,12 +124,12 @@ public final class SceneBundle implements Serializable {
         return sceneName;
     }
 
-    /** Image width in pixels, from the scene file. */
+    /** Image width in pixels, from the scene file and the overrides. */
     public int width() {
         return width;
     }
 
-    /** Image height in pixels, from the scene file. */
+    /** Image height in pixels, from the scene file and the overrides. */
     public int height() {
         return height;
     }
@@ -136,12 +151,17 @@ public final class SceneBundle implements Serializable {
         return size;
     }
 
+    /** The scene file's document with the overrides applied: what is rendered (before a frame's camera move). */
+    public SceneDocument document() throws SceneFileException {
+        return overrides.apply(SceneLoader.parse(text, name));
+    }
+
     /**
      * Loads the scene (on an executor), after {@code change} of its document, e.g. the camera moved to a frame's
      * pose. The OBJ files are written to a temporary folder laid out as on the driver and deleted after loading.
      */
     public LoadedScene load(UnaryOperator<SceneDocument> change) throws SceneFileException {
-        SceneDocument document = change.apply(SceneLoader.parse(text, name));
+        SceneDocument document = change.apply(document());
         if (files.isEmpty())
             return SceneLoader.build(document, name, Path.of("").toAbsolutePath(), text);
         Path root = null;

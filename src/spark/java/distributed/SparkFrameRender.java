@@ -1,5 +1,6 @@
 package distributed;
 
+import cli.RenderOverrides;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
@@ -11,7 +12,6 @@ import org.apache.spark.broadcast.Broadcast;
 import sceneio.CameraPath;
 import sceneio.CameraPathLoader;
 import sceneio.SceneFileException;
-import sceneio.SceneLoader;
 
 /**
  * An animation rendered on Spark: each frame of a camera path is one task that renders the whole frame on an
@@ -32,16 +32,21 @@ public final class SparkFrameRender {
     private SparkFrameRender() {}
 
     /**
-     * Renders every frame of the camera path through the scene file. The scene and the path are loaded on the
+     * Renders every frame of the camera path through the scene file, with the command-line overrides. The scene and the path are loaded on the
      * driver first, so a bad file fails with the CLI's message before any task is launched.
      *
      * @return the number of frames rendered
      */
     public static int render(
-            JavaSparkContext spark, Path sceneFile, Path pathFile, FrameSink sink, FaultInjection faults)
+            JavaSparkContext spark,
+            Path sceneFile,
+            RenderOverrides overrides,
+            Path pathFile,
+            FrameSink sink,
+            FaultInjection faults)
             throws SceneFileException, IOException {
-        SceneBundle bundle = SceneBundle.read(sceneFile);
-        CameraPath path = CameraPathLoader.load(pathFile, SceneLoader.parse(bundle.text(), bundle.name()));
+        SceneBundle bundle = SceneBundle.read(sceneFile, overrides);
+        CameraPath path = CameraPathLoader.load(pathFile, bundle.document());
         return render(spark, bundle, path, sink, faults);
     }
 

@@ -1,5 +1,6 @@
 package distributed;
 
+import cli.RenderOverrides;
 import java.nio.file.Path;
 import java.util.List;
 import org.apache.spark.api.java.JavaSparkContext;
@@ -21,14 +22,15 @@ public final class SparkTileRender {
     private SparkTileRender() {}
 
     /**
-     * Renders the scene file split by {@code grid}. The scene is loaded on the driver first, so a bad file fails
+     * Renders the scene file, with the command-line overrides, split by {@code grid}. The scene is loaded on the driver first, so a bad file fails
      * with the CLI's message before any task is launched.
      *
      * @return the stitched image
      */
-    public static ImageWriter render(JavaSparkContext spark, Path sceneFile, TileGrid grid, FaultInjection faults)
+    public static ImageWriter render(
+            JavaSparkContext spark, Path sceneFile, RenderOverrides overrides, TileGrid grid, FaultInjection faults)
             throws SceneFileException {
-        SceneBundle bundle = SceneBundle.read(sceneFile);
+        SceneBundle bundle = SceneBundle.read(sceneFile, overrides);
         return render(spark, bundle, grid.split(bundle.width(), bundle.height()), faults);
     }
 

@@ -3,6 +3,7 @@ package distributed;
 import cli.BadInputException;
 import cli.ExitCodes;
 import cli.OutputFile;
+import cli.RenderOverrides;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -11,6 +12,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.apache.spark.api.java.JavaSparkContext;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -18,8 +20,10 @@ import picocli.CommandLine.Spec;
 import renderer.ImageWriter;
 
 /**
- * {@code raytracer-spark tiles scene.json [--tiles 4x4] [-o out.png] [--master URL]}: renders a still image as
- * tiles on Spark and writes the stitched PNG. The scene file and the output are checked before Spark starts.
+ * {@code raytracer-spark tiles scene.json [--tiles 4x4] [-o out.png] [--master URL] [--width W] [--height H]
+ * [--samples N] [--bvh on|off]}: renders a still image as tiles on Spark and writes the stitched PNG. The scene
+ * file (with the overrides, as {@code raytracer render} applies them) and the output are checked before Spark
+ * starts.
  */
 @Command(
         name = "tiles",
@@ -51,6 +55,9 @@ public final class TilesCommand implements Callable<Integer> {
             description = "the tiles, one Spark task each: a grid such as 4x4, or a count (default: ${DEFAULT-VALUE})")
     private String tiles;
 
+    @Mixin
+    private RenderOverrides overrides = new RenderOverrides();
+
     @Option(
             names = "--master",
             paramLabel = "URL",
@@ -67,7 +74,8 @@ public final class TilesCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new BadInputException(e.getMessage());
         }
-        SceneBundle bundle = SceneBundle.read(sceneFile); // a bad scene fails here, before Spark starts
+        overrides.check();
+        SceneBundle bundle = SceneBundle.read(sceneFile, overrides); // a bad scene fails here, before Spark starts
         List<Tile> split;
         try {
             split = grid.split(bundle.width(), bundle.height());
