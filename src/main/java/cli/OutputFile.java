@@ -8,13 +8,14 @@ import java.util.Locale;
 /**
  * Checks, before anything is rendered, that an image can be written where the user asked: a {@code .png} file in
  * an existing, writable folder. Only the default folder {@code images/} is created when missing; a typo in an
- * explicit folder should be an error, not a new folder.
+ * explicit folder should be an error, not a new folder. Public so that other commands (the Spark jobs) check
+ * their output the same way.
  */
-final class OutputFile {
+public final class OutputFile {
     private OutputFile() {}
 
     /** The validated target path. */
-    static Path check(Path file, boolean createFolder) throws BadInputException {
+    public static Path check(Path file, boolean createFolder) throws BadInputException {
         String name = file.getFileName() == null ? "" : file.getFileName().toString();
         if (!name.toLowerCase(Locale.ROOT).endsWith(".png") || name.length() <= 4) {
             throw new BadInputException("output " + file + ": must be a .png file name, e.g. images/scene.png");

@@ -51,7 +51,15 @@ public final class RaytracerCli implements Runnable {
 
     /** The configured command line, for tests and for embedding. */
     public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
-        CommandLine cl = new CommandLine(new RaytracerCli());
+        return configure(new CommandLine(new RaytracerCli()), out, err);
+    }
+
+    /**
+     * Gives another command line (e.g. the Spark jobs' in src/spark) the same behaviour as this one: output to
+     * {@code out} and {@code err}, enum values in any case, and the same error reporting and exit codes (bad
+     * input: one {@code error: ...} line and exit 2; any other failure: exit 1).
+     */
+    public static CommandLine configure(CommandLine cl, PrintWriter out, PrintWriter err) {
         cl.setOut(out);
         cl.setErr(err);
         cl.setCaseInsensitiveEnumValuesAllowed(true);

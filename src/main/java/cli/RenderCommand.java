@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -12,9 +13,7 @@ import picocli.CommandLine.Spec;
 import renderer.Camera;
 import sceneio.LoadedScene;
 import sceneio.SceneLoader;
-import sceneio.model.CameraDocument;
 import sceneio.model.RenderDocument;
-import sceneio.model.SamplingDocument;
 import sceneio.model.SceneDocument;
 
 /**
@@ -36,15 +35,6 @@ import sceneio.model.SceneDocument;
             "2:bad input: scene file, option or output path (nothing rendered)"
         })
 public final class RenderCommand implements Callable<Integer> {
-    /** An on/off option value. */
-    public enum Switch {
-        ON,
-        OFF
-    }
-
-    /** The most anti-aliasing rays per pixel the core's sampling accepts. */
-    private static final int MAX_SAMPLES = 1 << 20;
-
     @Spec
     private CommandSpec spec;
 
@@ -63,23 +53,8 @@ public final class RenderCommand implements Callable<Integer> {
             description = "render threads (default: the scene's, else all cores)")
     private Integer threads;
 
-    @Option(names = "--bvh", paramLabel = "on|off", description = "use the BVH (default: the scene's, else on)")
-    private Switch bvh;
-
-    @Option(names = "--samples", paramLabel = "N", description = "anti-aliasing rays per pixel (1 = off)")
-    private Integer samples;
-
-    @Option(
-            names = "--width",
-            paramLabel = "W",
-            description = "image width; alone, the height follows the scene's aspect ratio")
-    private Integer width;
-
-    @Option(
-            names = "--height",
-            paramLabel = "H",
-            description = "image height; alone, the width follows the scene's aspect ratio")
-    private Integer height;
+    @Mixin
+    private RenderOverrides overrides = new RenderOverrides();
 
     @Option(
             names = "--progress",
@@ -97,13 +72,8 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        checkPositive("--threads", threads);
-        checkPositive("--samples", samples);
-        if (samples != null && samples > MAX_SAMPLES) {
-            throw new BadInputException("--samples must be <= " + MAX_SAMPLES + ", but was " + samples);
-        }
-        checkPositive("--width", width);
-        checkPositive("--height", height);
+        RenderOverrides.checkPositive("--threads", threads);
+        overrides.check();
 
         SceneDocument document = SceneLoader.read(sceneFile);
         document = applyOverrides(document);
@@ -137,40 +107,10 @@ public final class RenderCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    private static void checkPositive(String option, Integer value) throws BadInputException {
-        if (value != null && value < 1) {
-            throw new BadInputException(option + " must be >= 1, but was " + value);
-        }
-    }
-
     /** The command-line options written into the document, so the loader validates them like the file. */
     private SceneDocument applyOverrides(SceneDocument d) {
-        RenderDocument r = d.render();
-        if (r == null) return d; // the loader reports the missing section
-        if (threads != null) r = r.withThreads(threads);
-        if (bvh != null) r = r.withBvh(bvh == Switch.ON);
-        if (samples != null) {
-            SamplingDocument aa = r.antiAliasing();
-            r = r.withAntiAliasing(
-                    aa == null
-                            ? new SamplingDocument(samples, null, null, null)
-                            : new SamplingDocument(samples, aa.shape(), aa.pattern(), aa.adaptiveThreshold()));
-        }
-        CameraDocument camera = d.camera();
-        if (width != null || height != null) {
-            if (r.width() == null || r.height() == null || r.width() < 1 || r.height() < 1) {
-                return d.withRender(
-                        r.withSize(width != null ? width : r.width(), height != null ? height : r.height()));
-            }
-            double aspect = (double) r.width() / r.height();
-            int w = width != null ? width : (int) Math.max(1, Math.round(height * aspect));
-            int h = height != null ? height : (int) Math.max(1, Math.round(width / aspect));
-            r = r.withSize(w, h);
-            // Both given with another aspect ratio: keep the view plane width and square pixels.
-            if (width != null && height != null && camera != null && camera.vpWidth() != null) {
-                camera = camera.withVpHeight(camera.vpWidth() * h / w);
-            }
-        }
-        return d.withRender(r).withCamera(camera);
+        SceneDocument o = overrides.apply(d);
+        RenderDocument r = o.render();
+        return threads == null || r == null ? o : o.withRender(r.withThreads(threads));
     }
 }

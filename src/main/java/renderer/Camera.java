@@ -158,12 +158,43 @@ public final class Camera implements Cloneable {
 
     /** Renders the scene into a new image; statistics are in {@link #getLastStatistics()}. */
     public Camera renderImage() {
+        ImageWriter target = new ImageWriter("render", nX, nY);
+        lastStatistics = render(0, 0, nX, nY, target::writePixel);
+        image = target;
+        return this;
+    }
+
+    /**
+     * Renders only the pixels of a rectangle of the image: columns {@code x0 .. x0 + width - 1} and rows
+     * {@code y0 .. y0 + height - 1}. Every pixel is bit-identical to the same pixel of {@link #renderImage()}
+     * (its random numbers derive from the scene seed and the pixel's index in the whole image), so regions
+     * rendered anywhere, in any order, any number of times, stitch with {@link ImageWriter#writeRegion} into
+     * exactly the image that {@code renderImage()} gives. This is how a render is split across machines.
+     *
+     * <p>Statistics of this region are in {@link #getLastStatistics()}; {@link #getImage()} is not changed.
+     *
+     * @throws IllegalArgumentException if the rectangle is empty or not inside the image
+     */
+    public ImageRegion renderRegion(int x0, int y0, int width, int height) {
+        ImageRegion region = new ImageRegion(x0, y0, width, height, nX, nY);
+        lastStatistics = render(x0, y0, width, height, region::writePixel);
+        return region;
+    }
+
+    /** Where rendered pixels go, in image coordinates; called from the render threads, for distinct pixels. */
+    @FunctionalInterface
+    private interface PixelSink {
+        void write(int x, int y, Color color);
+    }
+
+    /** Renders a rectangle of the image in 16 x 16 tiles on the render threads into {@code sink}. */
+    private RenderStatistics render(int x0, int y0, int width, int height, PixelSink sink) {
         long start = System.nanoTime();
         rayTracer.prepare(settings);
         double preparation = rayTracer.preparationSeconds();
-        ImageWriter target = new ImageWriter("render", nX, nY);
         PixelRenderer pixels = new PixelRenderer();
-        int tilesX = (nX + TILE - 1) / TILE, tilesY = (nY + TILE - 1) / TILE, total = tilesX * tilesY;
+        int xEnd = x0 + width, yEnd = y0 + height;
+        int tilesX = (width + TILE - 1) / TILE, tilesY = (height + TILE - 1) / TILE, total = tilesX * tilesY;
         AtomicInteger next = new AtomicInteger();
         AtomicInteger done = new AtomicInteger();
         AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -178,10 +209,10 @@ public final class Camera implements Cloneable {
                     for (int t = next.getAndIncrement();
                             t < total && failure.get() == null;
                             t = next.getAndIncrement()) {
-                        int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
-                        for (int y = y0; y < Math.min(y0 + TILE, nY); y++) {
-                            for (int x = x0; x < Math.min(x0 + TILE, nX); x++) {
-                                target.writePixel(x, y, pixels.render(x, y, ctx));
+                        int tx = x0 + (t % tilesX) * TILE, ty = y0 + (t / tilesX) * TILE;
+                        for (int y = ty; y < Math.min(ty + TILE, yEnd); y++) {
+                            for (int x = tx; x < Math.min(tx + TILE, xEnd); x++) {
+                                sink.write(x, y, pixels.render(x, y, ctx));
                             }
                         }
                         int finished = done.incrementAndGet();
@@ -206,10 +237,8 @@ public final class Camera implements Cloneable {
             tests += ctx.primitiveTests();
         }
         double wall = (System.nanoTime() - start) * 1e-9;
-        image = target;
-        lastStatistics = new RenderStatistics(
-                wall, preparation, workers, (long) nX * nY, rays, visits, tests, rayTracer.describePlan());
-        return this;
+        return new RenderStatistics(
+                wall, preparation, workers, (long) width * height, rays, visits, tests, rayTracer.describePlan());
     }
 
     /** Runs the jobs on their own threads, the last one on the calling thread. */

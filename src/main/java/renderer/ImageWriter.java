@@ -77,6 +77,21 @@ public class ImageWriter {
         pixels[o + 2] = color.getB();
     }
 
+    /**
+     * Copies the pixels of a region (e.g. one rendered by {@link Camera#renderRegion} on another machine) into
+     * this image at the region's place; regions that cover the image together build it exactly.
+     *
+     * @throws IllegalArgumentException if the region does not lie inside this image
+     */
+    public void writeRegion(ImageRegion region) {
+        int x0 = region.getX0(), y0 = region.getY0(), w = region.getWidth(), h = region.getHeight();
+        if (x0 > nX - w || y0 > nY - h) {
+            throw new IllegalArgumentException("region of " + w + " x " + h + " at (" + x0 + ", " + y0
+                    + ") is not inside the " + nX + " x " + nY + " image");
+        }
+        for (int y = y0; y < y0 + h; y++) region.copyRow(y, pixels, 3 * (y * nX + x0));
+    }
+
     /** The linear (unclamped) colour of pixel (x, y). */
     public Color getPixel(int xIndex, int yIndex) {
         checkIndex(xIndex, yIndex);

@@ -86,9 +86,14 @@ public final class SceneLoader {
     }
 
     private static String text(Path file) throws SceneFileException {
+        return text(file, "scene file");
+    }
+
+    /** The file's text, strictly UTF-8; {@code kind} names the file in messages ("scene file"). */
+    static String text(Path file, String kind) throws SceneFileException {
         String name = file.toString();
         if (Files.isDirectory(file)) {
-            throw new SceneFileException(name, 0, 0, null, "is a folder, not a scene file", null);
+            throw new SceneFileException(name, 0, 0, null, "is a folder, not a " + kind, null);
         }
         try {
             byte[] bytes = Files.readAllBytes(file);
@@ -100,7 +105,7 @@ public final class SceneLoader {
                     .decode(ByteBuffer.wrap(bytes))
                     .toString();
         } catch (NoSuchFileException e) {
-            throw new SceneFileException(name, 0, 0, null, "scene file not found", e);
+            throw new SceneFileException(name, 0, 0, null, kind + " not found", e);
         } catch (CharacterCodingException e) {
             throw new SceneFileException(name, 0, 0, null, "is not UTF-8 text: " + e.getMessage(), e);
         } catch (IOException e) {

@@ -1,0 +1,107 @@
+package cli;
+
+import java.io.Serializable;
+import picocli.CommandLine.Option;
+import sceneio.model.CameraDocument;
+import sceneio.model.RenderDocument;
+import sceneio.model.SamplingDocument;
+import sceneio.model.SceneDocument;
+
+/**
+ * The options that change a scene file's render settings ({@code --bvh}, {@code --samples}, {@code --width},
+ * {@code --height}), as a picocli mixin shared by the commands that render scene files. They are written into the
+ * scene document, so the loader validates them like the file. Serializable because a distributed render applies
+ * the same overrides to the scene on every worker.
+ */
+public final class RenderOverrides implements Serializable {
+    private static final long serialVersionUID = 1L;
+
+    /** An on/off option value. */
+    public enum Switch {
+        ON,
+        OFF
+    }
+
+    /** The most anti-aliasing rays per pixel the core's sampling accepts. */
+    private static final int MAX_SAMPLES = 1 << 20;
+
+    @Option(names = "--bvh", paramLabel = "on|off", description = "use the BVH (default: the scene's, else on)")
+    private Switch bvh;
+
+    @Option(names = "--samples", paramLabel = "N", description = "anti-aliasing rays per pixel (1 = off)")
+    private Integer samples;
+
+    @Option(
+            names = "--width",
+            paramLabel = "W",
+            description = "image width; alone, the height follows the scene's aspect ratio")
+    private Integer width;
+
+    @Option(
+            names = "--height",
+            paramLabel = "H",
+            description = "image height; alone, the width follows the scene's aspect ratio")
+    private Integer height;
+
+    /** No overrides: the scene file's settings (picocli fills the options of a mixin it creates this way). */
+    public RenderOverrides() {}
+
+    /** These overrides; null leaves the scene's setting. */
+    public static RenderOverrides of(Integer width, Integer height, Integer samples, Boolean bvh) {
+        RenderOverrides o = new RenderOverrides();
+        o.width = width;
+        o.height = height;
+        o.samples = samples;
+        o.bvh = bvh == null ? null : bvh ? Switch.ON : Switch.OFF;
+        return o;
+    }
+
+    /** Rejects values no scene could take, naming the option. */
+    public void check() throws BadInputException {
+        checkPositive("--samples", samples);
+        if (samples != null && samples > MAX_SAMPLES) {
+            throw new BadInputException("--samples must be <= " + MAX_SAMPLES + ", but was " + samples);
+        }
+        checkPositive("--width", width);
+        checkPositive("--height", height);
+    }
+
+    static void checkPositive(String option, Integer value) throws BadInputException {
+        if (value != null && value < 1) {
+            throw new BadInputException(option + " must be >= 1, but was " + value);
+        }
+    }
+
+    /**
+     * The document with these overrides. One of width and height keeps the scene's aspect ratio; both with another
+     * ratio keep the view plane width and square pixels.
+     */
+    public SceneDocument apply(SceneDocument d) {
+        RenderDocument r = d.render();
+        if (r == null) return d; // the loader reports the missing section
+        if (bvh != null) r = r.withBvh(bvh == Switch.ON);
+        if (samples != null) {
+            SamplingDocument aa = r.antiAliasing();
+            r = r.withAntiAliasing(
+                    aa == null
+                            ? new SamplingDocument(samples, null, null, null)
+                            : new SamplingDocument(samples, aa.shape(), aa.pattern(), aa.adaptiveThreshold()));
+        }
+        CameraDocument camera = d.camera();
+        if (width != null || height != null) {
+            if (r.width() == null || r.height() == null || r.width() < 1 || r.height() < 1) {
+                return d.withRender(
+                        r.withSize(width != null ? width : r.width(), height != null ? height : r.height()));
+            }
+            double aspect = (double) r.width() / r.height();
+            int w = width != null ? width : (int) Math.max(1, Math.round(height * aspect));
+            int h = height != null ? height : (int) Math.max(1, Math.round(width / aspect));
+            r = r.withSize(w, h);
+            // Both given with another aspect ratio: keep the view plane width and square pixels.
+            if (width != null && height != null && camera != null && camera.vpWidth() != null) {
+                camera = camera.withVpHeight(camera.vpWidth() * h / w);
+            }
+        }
+        return d.withRender(r).withCamera(camera);
+    }
+}
