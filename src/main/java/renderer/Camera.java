@@ -115,6 +115,47 @@ public final class Camera implements Cloneable {
         return this;
     }
 
+    /** Where the camera is. */
+    public Point getLocation() {
+        return location;
+    }
+
+    /** The unit view direction. */
+    public Vector getDirection() {
+        return vTo;
+    }
+
+    /** The unit up direction (perpendicular to the view direction). */
+    public Vector getUp() {
+        return vUp;
+    }
+
+    public double getVpWidth() {
+        return vpWidth;
+    }
+
+    public double getVpHeight() {
+        return vpHeight;
+    }
+
+    public double getVpDistance() {
+        return vpDistance;
+    }
+
+    /** The lens radius (0 for a pinhole). */
+    public double getApertureRadius() {
+        return apertureRadius;
+    }
+
+    /** The distance of the focal plane (0 when depth of field was never set). */
+    public double getFocalDistance() {
+        return focalDistance;
+    }
+
+    public SamplingConfig getApertureSampling() {
+        return apertureSampling;
+    }
+
     public RayTracerBase getRayTracer() {
         return rayTracer;
     }

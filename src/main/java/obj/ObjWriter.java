@@ -1,0 +1,69 @@
+package obj;
+
+import geometries.Mesh;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+
+/**
+ * Writes a {@link Mesh} as a Wavefront OBJ file that {@link ObjReader} reads back to the same doubles: {@code v}
+ * and, for smooth meshes, {@code vn} lines with shortest round-trip decimals, then one {@code f} per triangle.
+ */
+public final class ObjWriter {
+    private ObjWriter() {}
+
+    /** The OBJ text of {@code mesh}. */
+    public static String toObj(Mesh mesh, String comment) {
+        double[] v = mesh.getVertices();
+        int[] f = mesh.getIndices();
+        double[] n = mesh.getNormals();
+        StringBuilder s = new StringBuilder(32 * (v.length + f.length));
+        if (comment != null) s.append("# ").append(comment.replace('\n', ' ')).append('\n');
+        for (int i = 0; i < v.length; i += 3) {
+            s.append("v ")
+                    .append(v[i])
+                    .append(' ')
+                    .append(v[i + 1])
+                    .append(' ')
+                    .append(v[i + 2])
+                    .append('\n');
+        }
+        if (n != null) {
+            for (int i = 0; i < n.length; i += 3) {
+                s.append("vn ")
+                        .append(n[i])
+                        .append(' ')
+                        .append(n[i + 1])
+                        .append(' ')
+                        .append(n[i + 2])
+                        .append('\n');
+            }
+        }
+        for (int i = 0; i < f.length; i += 3) {
+            s.append('f');
+            for (int k = 0; k < 3; k++) {
+                int index = f[i + k] + 1; // OBJ counts from 1
+                s.append(' ').append(index);
+                if (n != null) s.append("//").append(index);
+            }
+            s.append('\n');
+        }
+        return s.toString();
+    }
+
+    /** Writes {@code mesh} to {@code file} through a temporary file moved into place. */
+    public static void write(Mesh mesh, Path file, String comment) {
+        try {
+            Path folder = file.toAbsolutePath().getParent();
+            Files.createDirectories(folder);
+            Path temp = Files.createTempFile(folder, "." + file.getFileName(), ".tmp");
+            Files.writeString(temp, toObj(mesh, comment), StandardCharsets.UTF_8);
+            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
+        }
+    }
+}
