@@ -257,19 +257,21 @@ final class SceneBuilder {
             Vector direction = vector(at.field("direction"), required(at, "direction", s.direction()));
             SpotLight spot = new SpotLight(color, position, direction);
             if (s.narrowBeam() != null) core(at.field("narrowBeam"), () -> spot.setNarrowBeam(s.narrowBeam()));
-            attenuation(at, spot, s.kC(), s.kL(), s.kQ(), s.radius(), s.samples());
+            attenuation(at, spot, s.kC(), s.kL(), s.kQ(), s.radius(), s.samples(), s.range());
             return spot;
         }
         PointLightDocument p = (PointLightDocument) light;
         Color color = color(at.field("color"), required(at, "color", p.color()));
         Point position = point(at.field("position"), required(at, "position", p.position()));
         PointLight point = new PointLight(color, position);
-        attenuation(at, point, p.kC(), p.kL(), p.kQ(), p.radius(), p.samples());
+        attenuation(at, point, p.kC(), p.kL(), p.kQ(), p.radius(), p.samples(), p.range());
         return point;
     }
 
-    private void attenuation(JsonPath at, PointLight light, Double kC, Double kL, Double kQ, Double radius, Integer n)
+    private void attenuation(
+            JsonPath at, PointLight light, Double kC, Double kL, Double kQ, Double radius, Integer n, Double range)
             throws SceneFileException {
+        if (range != null) core(at.field("range"), () -> light.setRange(range));
         if (kC != null) core(at.field("kC"), () -> light.setKc(kC));
         if (kL != null) core(at.field("kL"), () -> light.setKl(kL));
         if (kQ != null) core(at.field("kQ"), () -> light.setKq(kQ));

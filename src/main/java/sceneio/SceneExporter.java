@@ -58,7 +58,7 @@ import sceneio.model.Vec3;
 /**
  * Turns a scene built in Java, with its camera, into a scene file: the JSON document plus one OBJ file per mesh
  * in a {@code models} folder beside it. Materials shared by several geometries become named materials. What the
- * format cannot say is an error naming it (a user-written {@link Intersectable}, a light with a finite range).
+ * format cannot say is an error naming it (a user-written {@link Intersectable} or light type).
  */
 public final class SceneExporter {
     private final Path folder;
@@ -167,12 +167,9 @@ public final class SceneExporter {
             return new DirectionalLightDocument(vec(d.getIntensity(Point.ZERO)), vec(d.getDirection()));
         }
         if (light instanceof PointLight p) {
-            if (Double.isFinite(p.getRange())) {
-                throw new IllegalArgumentException(
-                        "a light with a finite range (" + p.getRange() + ") cannot be written to a scene file yet");
-            }
             Double radius = p.getRadius() == 0 ? null : p.getRadius();
             Integer samples = p.getNumSamples() == 1 ? null : p.getNumSamples();
+            Double range = Double.isFinite(p.getRange()) ? p.getRange() : null;
             if (light instanceof SpotLight s) {
                 return new SpotLightDocument(
                         vec(s.getBaseIntensity()),
@@ -183,10 +180,18 @@ public final class SceneExporter {
                         s.getKl(),
                         s.getKq(),
                         radius,
-                        samples);
+                        samples,
+                        range);
             }
             return new PointLightDocument(
-                    vec(p.getBaseIntensity()), vec(p.getPosition()), p.getKc(), p.getKl(), p.getKq(), radius, samples);
+                    vec(p.getBaseIntensity()),
+                    vec(p.getPosition()),
+                    p.getKc(),
+                    p.getKl(),
+                    p.getKq(),
+                    radius,
+                    samples,
+                    range);
         }
         throw new IllegalArgumentException("a " + light.getClass().getName() + " cannot be written to a scene file");
     }

@@ -14,7 +14,7 @@ import com.fasterxml.jackson.annotation.JsonPropertyOrder;
  * @param radius radius of the emitting disk (default 0: hard shadows)
  * @param samples shadow rays per shading point (default 1)
  */
-@JsonPropertyOrder({"color", "position", "kC", "kL", "kQ", "radius", "samples"})
+@JsonPropertyOrder({"color", "position", "kC", "kL", "kQ", "radius", "samples", "range"})
 public record PointLightDocument(
-        Vec3 color, Vec3 position, Double kC, Double kL, Double kQ, Double radius, Integer samples)
+        Vec3 color, Vec3 position, Double kC, Double kL, Double kQ, Double radius, Integer samples, Double range)
         implements LightDocument {}

@@ -15,7 +15,7 @@ import com.fasterxml.jackson.annotation.JsonPropertyOrder;
  * @param radius radius of the emitting disk (default 0)
  * @param samples shadow rays per shading point (default 1)
  */
-@JsonPropertyOrder({"color", "position", "direction", "narrowBeam", "kC", "kL", "kQ", "radius", "samples"})
+@JsonPropertyOrder({"color", "position", "direction", "narrowBeam", "kC", "kL", "kQ", "radius", "samples", "range"})
 public record SpotLightDocument(
         Vec3 color,
         Vec3 position,
@@ -25,5 +25,6 @@ public record SpotLightDocument(
         Double kL,
         Double kQ,
         Double radius,
-        Integer samples)
+        Integer samples,
+        Double range)
         implements LightDocument {}
