@@ -3,7 +3,10 @@ package geometries;
 import primitives.Ray;
 
 /**
- * The slab test of the {@link BVH#WIDTH} child boxes of a BVH node, the traversal's inner kernel.
+ * The slab test of the {@link BVH#WIDTH} child boxes of a BVH node, the traversal's inner kernel. Two
+ * implementations give bit-identical answers: a scalar one, and one on the JDK's incubating Vector API that tests
+ * the four boxes at once. The vectorized one is chosen at startup when the JVM was started with
+ * {@code --add-modules jdk.incubator.vector}; without the flag the library runs the scalar one.
  *
  * <p>For each child box the test finds where the ray enters and leaves it within {@code (tMin, tMax)}, with the
  * conservative margins of {@link BoundingBox#entry}: the ray's direction signs say which plane of each slab is
@@ -11,7 +14,7 @@ import primitives.Ray;
  * and both are widened by {@code 2 gamma(3)} of their magnitude.
  */
 abstract class WideBoxTest {
-    /** The kernel this JVM runs. */
+    /** The kernel this JVM runs: vectorized if the Vector API module is present, scalar otherwise. */
     static final WideBoxTest SELECTED = select();
 
     /**
@@ -23,16 +26,27 @@ abstract class WideBoxTest {
      */
     abstract int test(float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries);
 
-    /** A short name for reports. */
+    /** A short name for reports: "vector" or "scalar". */
     abstract String name();
 
     private static WideBoxTest select() {
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) {
+            try {
+                // By name, so that without the module the vectorized class is never loaded.
+                return (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
+                        .getDeclaredConstructor()
+                        .newInstance();
+            } catch (ReflectiveOperationException | LinkageError e) {
+                return new ScalarWideBoxTest();
+            }
+        }
         return new ScalarWideBoxTest();
     }
 
     /**
      * The scalar test for rays with a zero (or subnormal) direction component: their slab distances may be
-     * {@code 0 * inf = NaN} when the ray lies in a slab's plane, and comparisons ignore the NaN there.
+     * {@code 0 * inf = NaN} when the ray lies in a slab's plane, and comparisons ignore the NaN there. Rare, so
+     * both implementations share it.
      */
     static int testWithInfiniteReciprocals(
             float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries) {

@@ -1,0 +1,63 @@
+package geometries;
+
+import jdk.incubator.vector.DoubleVector;
+import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.VectorMask;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorSpecies;
+import primitives.Ray;
+
+/**
+ * {@link WideBoxTest} on the JDK's incubating Vector API: the four child boxes of a node in the four lanes of a
+ * 256-bit vector of doubles. Every lane computes exactly what {@link ScalarWideBoxTest} computes for its box (the
+ * same float-to-double conversions, the same IEEE operations in the same order, {@code Math.max} semantics for
+ * lanewise maximum), so the answers are bit-identical. Loaded only when the JVM runs with
+ * {@code --add-modules jdk.incubator.vector}.
+ */
+final class VectorWideBoxTest extends WideBoxTest {
+    private static final VectorSpecies<Float> FLOATS = FloatVector.SPECIES_128;
+    private static final VectorSpecies<Double> DOUBLES = DoubleVector.SPECIES_256;
+    /** Bit c in lane c: blended by the hit mask and summed, it gives the mask as an int. */
+    private static final DoubleVector LANE_BITS = DoubleVector.fromArray(DOUBLES, new double[] {1, 2, 4, 8}, 0);
+
+    private static final DoubleVector ZERO = DoubleVector.zero(DOUBLES);
+    private static final DoubleVector MISS = DoubleVector.broadcast(DOUBLES, BoundingBox.MISS);
+
+    VectorWideBoxTest() {
+        if (BVH.WIDTH != DOUBLES.length()) throw new IllegalStateException("one lane per child box");
+    }
+
+    @Override
+    int test(float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries) {
+        if ((signs & BoundingBox.FINITE_RECIPROCALS) == 0) {
+            return testWithInfiniteReciprocals(nodes, o, ray, signs, tMin, tMax, entries);
+        }
+        int flipX = (signs & 1) * BVH.MAX_X, flipY = (signs >> 1 & 1) * BVH.MAX_X, flipZ = (signs >> 2 & 1) * BVH.MAX_X;
+        DoubleVector near = slab(nodes, o + BVH.MIN_X + flipX, ray.ox, ray.invDx)
+                .max(slab(nodes, o + BVH.MIN_Y + flipY, ray.oy, ray.invDy))
+                .max(slab(nodes, o + BVH.MIN_Z + flipZ, ray.oz, ray.invDz));
+        DoubleVector far = slab(nodes, o + BVH.MAX_X - flipX, ray.ox, ray.invDx)
+                .min(slab(nodes, o + BVH.MAX_Y - flipY, ray.oy, ray.invDy))
+                .min(slab(nodes, o + BVH.MAX_Z - flipZ, ray.oz, ray.invDz));
+        near = near.sub(near.abs().mul(BoundingBox.SLAB_SLACK));
+        far = far.add(far.abs().mul(BoundingBox.SLAB_SLACK));
+        VectorMask<Double> hit = near.compare(VectorOperators.LE, far)
+                .and(near.compare(VectorOperators.LE, tMax))
+                .and(far.compare(VectorOperators.GE, tMin));
+        MISS.blend(near, hit).intoArray(entries, 0);
+        // VectorMask.toLong is not an intrinsic on JDK 17; a blend and a lane sum are.
+        return (int) ZERO.blend(LANE_BITS, hit).reduceLanes(VectorOperators.ADD);
+    }
+
+    /** Distances along the ray to the four planes {@code nodes[i..i+4)} of one axis. */
+    private static DoubleVector slab(float[] nodes, int i, double origin, double reciprocal) {
+        return ((DoubleVector) FloatVector.fromArray(FLOATS, nodes, i).convertShape(VectorOperators.F2D, DOUBLES, 0))
+                .sub(origin)
+                .mul(reciprocal);
+    }
+
+    @Override
+    String name() {
+        return "vector";
+    }
+}
