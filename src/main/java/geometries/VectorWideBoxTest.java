@@ -2,6 +2,7 @@ package geometries;
 
 import jdk.incubator.vector.DoubleVector;
 import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.LongVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
@@ -17,10 +18,11 @@ import primitives.Ray;
 final class VectorWideBoxTest extends WideBoxTest {
     private static final VectorSpecies<Float> FLOATS = FloatVector.SPECIES_128;
     private static final VectorSpecies<Double> DOUBLES = DoubleVector.SPECIES_256;
-    /** Bit c in lane c: blended by the hit mask and summed, it gives the mask as an int. */
-    private static final DoubleVector LANE_BITS = DoubleVector.fromArray(DOUBLES, new double[] {1, 2, 4, 8}, 0);
+    private static final VectorSpecies<Long> LONGS = LongVector.SPECIES_256;
+    /** Bit c in lane c: blended by the hit mask and OR-ed together, it gives the mask as an int. */
+    private static final LongVector LANE_BITS = LongVector.fromArray(LONGS, new long[] {1, 2, 4, 8}, 0);
 
-    private static final DoubleVector ZERO = DoubleVector.zero(DOUBLES);
+    private static final LongVector NO_BITS = LongVector.zero(LONGS);
     private static final DoubleVector MISS = DoubleVector.broadcast(DOUBLES, BoundingBox.MISS);
 
     VectorWideBoxTest() {
@@ -45,8 +47,8 @@ final class VectorWideBoxTest extends WideBoxTest {
                 .and(near.compare(VectorOperators.LE, tMax))
                 .and(far.compare(VectorOperators.GE, tMin));
         MISS.blend(near, hit).intoArray(entries, 0);
-        // VectorMask.toLong is not an intrinsic on JDK 17; a blend and a lane sum are.
-        return (int) ZERO.blend(LANE_BITS, hit).reduceLanes(VectorOperators.ADD);
+        // VectorMask.toLong is not an intrinsic on JDK 17; a blend and an OR across the lanes are.
+        return (int) NO_BITS.blend(LANE_BITS, hit.cast(LONGS)).reduceLanes(VectorOperators.OR);
     }
 
     /** Distances along the ray to the four planes {@code nodes[i..i+4)} of one axis. */
