@@ -10,10 +10,10 @@ import primitives.Ray;
 
 /**
  * {@link WideBoxTest} on the JDK's incubating Vector API: the four child boxes of a node in the four lanes of a
- * 256-bit vector of doubles. Every lane computes exactly what {@link ScalarWideBoxTest} computes for its box (the
- * same float-to-double conversions, the same IEEE operations in the same order, {@code Math.max} semantics for
- * lanewise maximum), so the answers are bit-identical. Loaded only when the JVM runs with
- * {@code --add-modules jdk.incubator.vector}.
+ * 256-bit vector of doubles. Every lane computes what {@link ScalarWideBoxTest} computes for its box (the same
+ * float-to-double conversions, the same IEEE operations in the same order), so the masks are identical and the
+ * entry distances equal (bit for bit but for the sign of a zero, see {@link #max}). Loaded only when the JVM runs
+ * with {@code --add-modules jdk.incubator.vector}.
  */
 final class VectorWideBoxTest extends WideBoxTest {
     private static final VectorSpecies<Float> FLOATS = FloatVector.SPECIES_128;
@@ -35,12 +35,16 @@ final class VectorWideBoxTest extends WideBoxTest {
             return testWithInfiniteReciprocals(nodes, o, ray, signs, tMin, tMax, entries);
         }
         int flipX = (signs & 1) * BVH.MAX_X, flipY = (signs >> 1 & 1) * BVH.MAX_X, flipZ = (signs >> 2 & 1) * BVH.MAX_X;
-        DoubleVector near = slab(nodes, o + BVH.MIN_X + flipX, ray.ox, ray.invDx)
-                .max(slab(nodes, o + BVH.MIN_Y + flipY, ray.oy, ray.invDy))
-                .max(slab(nodes, o + BVH.MIN_Z + flipZ, ray.oz, ray.invDz));
-        DoubleVector far = slab(nodes, o + BVH.MAX_X - flipX, ray.ox, ray.invDx)
-                .min(slab(nodes, o + BVH.MAX_Y - flipY, ray.oy, ray.invDy))
-                .min(slab(nodes, o + BVH.MAX_Z - flipZ, ray.oz, ray.invDz));
+        DoubleVector near = max(
+                max(
+                        slab(nodes, o + BVH.MIN_X + flipX, ray.ox, ray.invDx),
+                        slab(nodes, o + BVH.MIN_Y + flipY, ray.oy, ray.invDy)),
+                slab(nodes, o + BVH.MIN_Z + flipZ, ray.oz, ray.invDz));
+        DoubleVector far = min(
+                min(
+                        slab(nodes, o + BVH.MAX_X - flipX, ray.ox, ray.invDx),
+                        slab(nodes, o + BVH.MAX_Y - flipY, ray.oy, ray.invDy)),
+                slab(nodes, o + BVH.MAX_Z - flipZ, ray.oz, ray.invDz));
         near = near.sub(near.abs().mul(BoundingBox.SLAB_SLACK));
         far = far.add(far.abs().mul(BoundingBox.SLAB_SLACK));
         VectorMask<Double> hit = near.compare(VectorOperators.LE, far)
@@ -49,6 +53,21 @@ final class VectorWideBoxTest extends WideBoxTest {
         MISS.blend(near, hit).intoArray(entries, 0);
         // VectorMask.toLong is not an intrinsic on JDK 17; a blend and an OR across the lanes are.
         return (int) NO_BITS.blend(LANE_BITS, hit.cast(LONGS)).reduceLanes(VectorOperators.OR);
+    }
+
+    /**
+     * The larger of each pair of lanes by one comparison and one blend. Lanewise MAX has Math.max semantics (NaN
+     * wins, -0 below +0), five instructions that lengthen the chain every node visit waits on. Here no operand is
+     * NaN (reciprocals are finite, bounds finite or infinite, never an infinity minus itself), and where the two
+     * differ, for zeros of opposite sign, no comparison of the traversal can tell.
+     */
+    private static DoubleVector max(DoubleVector a, DoubleVector b) {
+        return a.blend(b, a.compare(VectorOperators.LT, b));
+    }
+
+    /** The smaller of each pair of lanes; see {@link #max}. */
+    private static DoubleVector min(DoubleVector a, DoubleVector b) {
+        return a.blend(b, b.compare(VectorOperators.LT, a));
     }
 
     /** Distances along the ray to the four planes {@code nodes[i..i+4)} of one axis. */

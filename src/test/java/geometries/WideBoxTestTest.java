@@ -14,8 +14,8 @@ import primitives.Vector;
 /**
  * The two kernels of {@link WideBoxTest}: the JVM picks the vectorized one exactly when the Vector API module is
  * present (surefire runs the BVH tests both with and without it), and both give the same masks and the same
- * entry distances bit for bit, on random boxes and rays and on the hard cases: rays in a box's face plane, with
- * zero direction components, from inside a box, toward empty slots, through flat boxes.
+ * entry distances, on random boxes and rays and on the hard cases: rays in a box's face plane, with zero direction
+ * components, from inside a box, toward empty slots, through flat boxes.
  */
 class WideBoxTestTest {
     private static final boolean VECTOR_MODULE =
@@ -27,7 +27,7 @@ class WideBoxTestTest {
     }
 
     @Test
-    void scalarAndVectorKernelsAgreeBitForBit() throws ReflectiveOperationException {
+    void scalarAndVectorKernelsAgree() throws ReflectiveOperationException {
         assumeTrue(VECTOR_MODULE, "needs --add-modules jdk.incubator.vector");
         WideBoxTest vector = (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
                 .getDeclaredConstructor()
@@ -48,7 +48,8 @@ class WideBoxTestTest {
             String where = "case " + i + ": " + ray + " in (" + tMin + ", " + tMax + ")";
             assertEquals(maskA, maskB, where);
             for (int c = 0; c < BVH.WIDTH; c++) {
-                assertEquals(Double.doubleToRawLongBits(a[c]), Double.doubleToRawLongBits(b[c]), where + " child " + c);
+                // Equal as numbers: bit for bit, but for the sign of a zero (see VectorWideBoxTest.max).
+                assertTrue(a[c] == b[c], where + " child " + c + ": " + a[c] + " vs " + b[c]);
             }
             hits += Integer.bitCount(maskA);
         }
