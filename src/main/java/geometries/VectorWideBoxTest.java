@@ -25,8 +25,16 @@ final class VectorWideBoxTest extends WideBoxTest {
     private static final LongVector NO_BITS = LongVector.zero(LONGS);
     private static final DoubleVector MISS = DoubleVector.broadcast(DOUBLES, BoundingBox.MISS);
 
+    /**
+     * Refuses (and {@link WideBoxTest} falls back to the scalar kernel) where the CPU has no 256-bit vectors
+     * (SSE-only x86, 128-bit NEON): there the JIT would not compile the vector operations to instructions, and
+     * the Vector API's Java fallback is far slower than scalar code.
+     */
     VectorWideBoxTest() {
         if (BVH.WIDTH != DOUBLES.length()) throw new IllegalStateException("one lane per child box");
+        if (DoubleVector.SPECIES_PREFERRED.vectorBitSize() < DOUBLES.vectorBitSize()) {
+            throw new UnsupportedOperationException("no " + DOUBLES.vectorBitSize() + "-bit vectors on this CPU");
+        }
     }
 
     @Override

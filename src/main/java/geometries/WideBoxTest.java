@@ -14,7 +14,10 @@ import primitives.Ray;
  * and both are widened by {@code 2 gamma(3)} of their magnitude.
  */
 abstract class WideBoxTest {
-    /** The kernel this JVM runs: vectorized if the Vector API module is present, scalar otherwise. */
+    /**
+     * The kernel this JVM runs: vectorized if the Vector API module is present and the CPU has 256-bit vectors,
+     * scalar otherwise.
+     */
     static final WideBoxTest SELECTED = select();
 
     /**
