@@ -193,10 +193,11 @@ public final class Accelerator implements Intersectable {
             final double[] stackEntry = hit.stackEntry;
             final double[] entries = hit.entries;
             final int signs = BoundingBox.directionSigns(ray);
-            long visits = 1;
+            long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
+            // No test of the root's own box: visiting the root tests its children's boxes, which lie inside it.
+            boolean more = true;
             while (more) {
                 if (count > 0) {
                     for (int k = link, end = link + count; k < end; k++) {
@@ -349,10 +350,10 @@ public final class Accelerator implements Intersectable {
             final WideBoxTest boxTest = WideBoxTest.SELECTED;
             final int[] stack = scratch.stack;
             final int signs = BoundingBox.directionSigns(ray);
-            long visits = 1;
+            long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
+            boolean more = true; // no test of the root's own box, as in intersect
             try {
                 while (more) {
                     if (count > 0) {
