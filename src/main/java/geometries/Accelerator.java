@@ -216,7 +216,7 @@ public final class Accelerator implements Intersectable {
                     int mask = boxTest.test(nodes, o, ray, signs, tMin, tMax, entries);
                     if (mask != 0) {
                         // One child hit: branches, not a bit scan, so that the CPU can predict which child comes
-                        // next and fetch it before the box test has finished.
+                        // next and fetch it before the box test has finished (written out for BVH.WIDTH = 4).
                         int only = mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : mask == 8 ? 3 : -1;
                         if (only >= 0) {
                             link = Float.floatToRawIntBits(nodes[o + BVH.LINK + only]);
