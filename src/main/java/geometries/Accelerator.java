@@ -188,13 +188,16 @@ public final class Accelerator implements Intersectable {
             }
         } else if (boundedCount > 0) {
             final float[] nodes = bvh.nodes;
+            final WideBoxTest boxTest = WideBoxTest.SELECTED;
             final int[] stack = hit.stack;
             final double[] stackEntry = hit.stackEntry;
+            final double[] entries = hit.entries;
             final int signs = BoundingBox.directionSigns(ray);
-            long visits = 1;
+            long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
+            // No test of the root's own box: visiting the root tests its children's boxes, which lie inside it.
+            boolean more = true;
             while (more) {
                 if (count > 0) {
                     for (int k = link, end = link + count; k < end; k++) {
@@ -207,26 +210,32 @@ public final class Accelerator implements Intersectable {
                         }
                     }
                 } else {
-                    // Both children's boxes come with this node: test both, go to the nearer, postpone the other.
+                    // All children's boxes come with this node: test them, go to the nearest, postpone the others.
                     int o = BVH.NODE_STRIDE * link;
-                    visits += 2;
-                    double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
-                    double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
-                    // Plain branches, not index arithmetic: for coherent rays they predict well, and the CPU
-                    // then fetches the next node before the box tests have finished.
-                    if (entry0 <= entry1) {
-                        if (entry0 < BoundingBox.MISS) {
-                            if (entry1 < BoundingBox.MISS)
-                                sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK + 2, entry1);
-                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK]);
-                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT]);
+                    visits += BVH.WIDTH;
+                    int mask = boxTest.test(nodes, o, ray, signs, tMin, tMax, entries);
+                    if (mask != 0) {
+                        // One child hit: branches, not a bit scan, so that the CPU can predict which child comes
+                        // next and fetch it before the box test has finished (written out for BVH.WIDTH = 4).
+                        int only = mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : mask == 8 ? 3 : -1;
+                        if (only >= 0) {
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + only]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + only]);
                             continue;
                         }
-                    } else if (entry1 < BoundingBox.MISS) {
-                        if (entry0 < BoundingBox.MISS)
-                            sp = push(stack, stackEntry, sp, nodes, o + BVH.FIRST_LINK, entry0);
-                        link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2]);
-                        count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2]);
+                        // Push every child hit, order them so the nearest is on top, and take it.
+                        int base = sp;
+                        do {
+                            int c = Integer.numberOfTrailingZeros(mask);
+                            mask &= mask - 1;
+                            stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                            stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                            stackEntry[sp++] = entries[c];
+                        } while (mask != 0);
+                        sortNearestOnTop(stack, stackEntry, base, sp);
+                        sp--;
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
                         continue;
                     }
                 }
@@ -267,12 +276,25 @@ public final class Accelerator implements Intersectable {
     /** The shared-edge entry of {@link #info} for a primitive that is not a triangle. */
     private static final int OBJECT = -1;
 
-    /** Postpones the child whose link and count are at {@code child}; returns the new stack size. */
-    private static int push(int[] stack, double[] stackEntry, int sp, float[] nodes, int child, double entry) {
-        stack[2 * sp] = Float.floatToRawIntBits(nodes[child]);
-        stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[child + 1]);
-        stackEntry[sp] = entry;
-        return sp + 1;
+    /**
+     * Sorts stack entries {@code [from, to)} by entry distance, farthest first, so the nearest is popped first
+     * (insertion sort: at most {@link BVH#WIDTH} entries).
+     */
+    private static void sortNearestOnTop(int[] stack, double[] stackEntry, int from, int to) {
+        for (int i = from + 1; i < to; i++) {
+            double e = stackEntry[i];
+            int link = stack[2 * i], count = stack[2 * i + 1];
+            int j = i - 1;
+            while (j >= from && stackEntry[j] < e) {
+                stackEntry[j + 1] = stackEntry[j];
+                stack[2 * j + 2] = stack[2 * j];
+                stack[2 * j + 3] = stack[2 * j + 1];
+                j--;
+            }
+            stackEntry[j + 1] = e;
+            stack[2 * j + 2] = link;
+            stack[2 * j + 3] = count;
+        }
     }
 
     // ---------------------------------------------------------------- shadows
@@ -325,12 +347,13 @@ public final class Accelerator implements Intersectable {
             }
             if (boundedCount == 0) return false;
             final float[] nodes = bvh.nodes;
+            final WideBoxTest boxTest = WideBoxTest.SELECTED;
             final int[] stack = scratch.stack;
             final int signs = BoundingBox.directionSigns(ray);
-            long visits = 1;
+            long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
-            boolean more = BoundingBox.entry(bvh.rootBounds, 0, ray, signs, tMin, tMax) < BoundingBox.MISS;
+            boolean more = true; // no test of the root's own box, as in intersect
             try {
                 while (more) {
                     if (count > 0) {
@@ -342,17 +365,18 @@ public final class Accelerator implements Intersectable {
                         }
                     } else {
                         int o = BVH.NODE_STRIDE * link;
-                        visits += 2;
-                        double entry0 = BoundingBox.entry(nodes, o, ray, signs, tMin, tMax);
-                        double entry1 = BoundingBox.entry(nodes, o + BVH.SECOND_BOX, ray, signs, tMin, tMax);
-                        int first = entry0 <= entry1 ? 0 : 2;
-                        if (Math.min(entry0, entry1) < BoundingBox.MISS) {
-                            if (Math.max(entry0, entry1) < BoundingBox.MISS) {
-                                stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + 2 - first]);
-                                stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + 2 - first]);
+                        visits += BVH.WIDTH;
+                        // Any hit will do: no ordering, postpone every child hit but the first.
+                        int mask = boxTest.test(nodes, o, ray, signs, tMin, tMax, scratch.entries);
+                        if (mask != 0) {
+                            int c = Integer.numberOfTrailingZeros(mask);
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                            for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                                c = Integer.numberOfTrailingZeros(mask);
+                                stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                                stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
                             }
-                            link = Float.floatToRawIntBits(nodes[o + BVH.FIRST_LINK + first]);
-                            count = Float.floatToRawIntBits(nodes[o + BVH.FIRST_COUNT + first]);
                             continue;
                         }
                     }

@@ -5,23 +5,34 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * A bounding volume hierarchy built top-down with a binned surface-area heuristic and flattened depth-first into
- * one primitive array. Each interior node is 64 bytes, one cache line: the boxes of its two children as floats
- * rounded outward (so box tests stay conservative) and, per child, a link and a count. A child with a count is a
- * leaf holding that many primitives of the leaf order from its link; a child with count 0 is the interior node its
- * link names. The first interior child of a node follows it in the array (depth-first order).
+ * A bounding volume hierarchy built top-down with a binned surface-area heuristic as a binary tree, then collapsed
+ * into a 4-wide tree (Embree's and pbrt-v4's wide-BVH layout) and flattened depth-first into one float array.
  *
- * <p>Keeping both child boxes in the parent lets the traversal test the two children with one memory fetch and
- * visit the nearer first; incoherent rays are bound by those fetches (see docs/BENCHMARKS.md).
+ * <p>Each 4-wide node is 128 bytes: the boxes of its (up to) four children in structure-of-arrays form, as floats
+ * rounded outward so box tests stay conservative ({@code minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4]}),
+ * then per child a link and a count. A child with a count is a leaf holding that many primitives of the leaf
+ * order from its link; a child with count 0 is the node its link names. Unused slots hold an empty box (min
+ * {@code +inf}, max {@code -inf}) that every ray misses. The first interior child of a node follows it in the
+ * array (depth-first order).
  *
- * <p>Build: at each node the centroids are binned along the axis of largest centroid extent; the split between
- * bins that minimises {@code 1 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper and
- * small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The traversal lives in
- * {@link Accelerator}, next to the primitive data it tests.
+ * <p>Keeping the four child boxes in the parent lets the traversal test them with one fetch of two cache lines
+ * and visit the nearest first; the 4-wide tree has about half the depth of the binary one, so a ray makes half as
+ * many dependent node fetches and stack operations (see docs/BENCHMARKS.md).
+ *
+ * <p>Build: at each binary node the centroids are binned along the axis of largest centroid extent; the split
+ * between bins that minimises {@code 1 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper
+ * and small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The binary tree is
+ * then collapsed: a 4-wide node starts from a binary node's two children and repeatedly replaces the interior
+ * child of largest surface area by its two children until it has four. The traversal lives in {@link Accelerator},
+ * next to the primitive data it tests.
  */
 public final class BVH {
-    /** Deepest node level; the traversal stack is sized from it. */
+    /** Deepest node level of the binary tree (and so of the 4-wide tree); the traversal stack is sized from it. */
     public static final int MAX_DEPTH = 64;
+    /** Children per node of the traversal tree. */
+    public static final int WIDTH = 4;
+    /** Entries the traversal stack may need: each node visited pushes at most {@code WIDTH - 1} more. */
+    static final int STACK_SIZE = (WIDTH - 1) * MAX_DEPTH + 2;
     /**
      * Cost of visiting a node relative to testing a primitive. pbrt-v4 uses 0.5; here a visit tests both child
      * boxes, which the JMH kernels put at about one watertight triangle test, and 1.0 measured faster on the
@@ -29,71 +40,124 @@ public final class BVH {
      */
     private static final double TRAVERSAL_COST = 1.0;
 
-    /** Words per interior node in {@link #nodes}. */
-    static final int NODE_STRIDE = 16;
-    /** Offset of the second child's box in a node; the first child's box is at offset 0. */
-    static final int SECOND_BOX = 6;
-    /** Offsets of the first child's link and count (int bits); the second child's follow at +2 and +3. */
-    static final int FIRST_LINK = 12, FIRST_COUNT = 13;
+    /** Floats per node in {@link #nodes}. */
+    static final int NODE_STRIDE = 8 * WIDTH;
+    /** Offsets of the children's box coordinates in a node: child c's minX is at {@code MIN_X + c}, and so on. */
+    static final int MIN_X = 0,
+            MIN_Y = WIDTH,
+            MIN_Z = 2 * WIDTH,
+            MAX_X = 3 * WIDTH,
+            MAX_Y = 4 * WIDTH,
+            MAX_Z = 5 * WIDTH;
+    /** Offsets of the children's links and counts (int bits): child c's link is at {@code LINK + c}. */
+    static final int LINK = 6 * WIDTH, COUNT = 7 * WIDTH;
 
     /**
-     * Interior node i at [16i, 16i+16): minX, minY, minZ, maxX, maxY, maxZ of child 0, the same of child 1, then
-     * link and count of child 0 and of child 1 stored as float bits ({@link Float#intBitsToFloat}; the values are
-     * non-negative ints, so no NaN pattern arises).
+     * Node i at [32i, 32i+32): the six box coordinates of children 0..3 coordinate by coordinate, then the four
+     * links and the four counts stored as float bits ({@link Float#intBitsToFloat}; the values are non-negative
+     * ints, so no NaN pattern arises).
      */
     final float[] nodes;
     /** The root's box (rounded outward) and the root as a child: a leaf if {@link #rootCount} is positive. */
     final float[] rootBounds = new float[6];
 
     final int rootLink, rootCount;
-    /** Split axis of each interior node (for inspection only). */
-    private final byte[] axes;
     /** The primitives in leaf order: entry k is the original index of the k-th primitive. */
     final int[] order;
 
-    private final int nodeCount;
+    private final int binaryNodeCount;
     private final int leafCount;
     private final int maxDepth;
+    private final int wideNodeCount;
 
     private BVH(Builder b) {
-        this.nodeCount = b.nodeCount;
+        this.binaryNodeCount = b.nodeCount;
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
         this.order = b.index;
-        int interior = nodeCount - leafCount;
-        // Interior binary nodes keep their depth-first order, so a first child that is interior follows its parent.
-        int[] interiorIndex = new int[nodeCount];
-        for (int i = 0, next = 0; i < nodeCount; i++) {
-            interiorIndex[i] = b.data[2 * i + 1] > 0 ? -1 : next++;
-        }
-        nodes = new float[NODE_STRIDE * interior];
-        axes = new byte[interior];
-        for (int i = 0; i < nodeCount; i++) {
-            int info = b.data[2 * i + 1];
-            if (info > 0) continue;
-            int o = NODE_STRIDE * interiorIndex[i];
-            axes[interiorIndex[i]] = (byte) (-1 - info);
-            storeChild(b, i + 1, interiorIndex, nodes, o, o + FIRST_LINK);
-            storeChild(b, b.data[2 * i], interiorIndex, nodes, o + SECOND_BOX, o + FIRST_LINK + 2);
-        }
+        Collapser c = new Collapser(b);
+        boolean rootIsLeaf = b.data[1] > 0;
+        if (!rootIsLeaf) c.collapse(0);
+        nodes = Arrays.copyOf(c.nodes, NODE_STRIDE * c.count);
+        wideNodeCount = c.count;
         for (int a = 0; a < 3; a++) {
             rootBounds[a] = floatBelow(b.bounds[a]);
             rootBounds[3 + a] = floatAbove(b.bounds[3 + a]);
         }
-        boolean rootIsLeaf = b.data[1] > 0;
         rootLink = rootIsLeaf ? b.data[0] : 0;
         rootCount = rootIsLeaf ? b.data[1] : 0;
     }
 
-    /** Writes binary node {@code c} as a child: its box at {@code box}, its link and count at {@code link}. */
-    private static void storeChild(Builder b, int c, int[] interiorIndex, float[] nodes, int box, int link) {
-        for (int a = 0; a < 3; a++) {
-            nodes[box + a] = floatBelow(b.bounds[6 * c + a]);
-            nodes[box + 3 + a] = floatAbove(b.bounds[6 * c + 3 + a]);
+    /** Collapses the binary tree into 4-wide nodes, written depth-first. */
+    private static final class Collapser {
+        private final Builder b;
+        float[] nodes;
+        int count;
+
+        Collapser(Builder b) {
+            this.b = b;
+            // A binary tree of L leaves has L - 1 interior nodes; every 4-wide node absorbs at least one.
+            nodes = new float[NODE_STRIDE * Math.max(1, b.nodeCount - b.leafCount)];
         }
-        boolean leaf = b.data[2 * c + 1] > 0;
-        nodes[link] = Float.intBitsToFloat(leaf ? b.data[2 * c] : interiorIndex[c]);
-        nodes[link + 1] = Float.intBitsToFloat(leaf ? b.data[2 * c + 1] : 0);
+
+        /** Writes the 4-wide node that replaces binary interior node {@code binary}; returns its index. */
+        int collapse(int binary) {
+            int self = count++;
+            int[] children = new int[WIDTH];
+            int n = 0;
+            children[n++] = binary + 1;
+            children[n++] = b.data[2 * binary];
+            while (n < WIDTH) {
+                // Open the interior child of largest surface area: it is the likeliest to be entered.
+                int widest = -1;
+                double widestArea = -1;
+                for (int i = 0; i < n; i++) {
+                    if (isLeaf(children[i])) continue;
+                    double area = area(children[i]);
+                    if (area > widestArea) {
+                        widestArea = area;
+                        widest = i;
+                    }
+                }
+                if (widest < 0) break;
+                int opened = children[widest];
+                System.arraycopy(children, widest + 1, children, widest + 2, n - widest - 1);
+                children[widest] = opened + 1;
+                children[widest + 1] = b.data[2 * opened];
+                n++;
+            }
+            int o = NODE_STRIDE * self;
+            for (int c = 0; c < WIDTH; c++) {
+                if (c >= n) {
+                    // An empty box: every slab test misses it (its near distance is +inf or NaN).
+                    for (int a = 0; a < 3; a++) {
+                        nodes[o + MIN_X + WIDTH * a + c] = Float.POSITIVE_INFINITY;
+                        nodes[o + MAX_X + WIDTH * a + c] = Float.NEGATIVE_INFINITY;
+                    }
+                    continue;
+                }
+                int child = children[c];
+                for (int a = 0; a < 3; a++) {
+                    nodes[o + MIN_X + WIDTH * a + c] = floatBelow(b.bounds[6 * child + a]);
+                    nodes[o + MAX_X + WIDTH * a + c] = floatAbove(b.bounds[6 * child + 3 + a]);
+                }
+                boolean leaf = isLeaf(child);
+                int link = leaf ? b.data[2 * child] : collapse(child);
+                nodes[o + LINK + c] = Float.intBitsToFloat(link);
+                nodes[o + COUNT + c] = Float.intBitsToFloat(leaf ? b.data[2 * child + 1] : 0);
+            }
+            return self;
+        }
+
+        private boolean isLeaf(int binary) {
+            return b.data[2 * binary + 1] > 0;
+        }
+
+        private double area(int binary) {
+            int o = 6 * binary;
+            return Builder.surfaceArea(
+                    b.bounds[o], b.bounds[o + 1], b.bounds[o + 2], b.bounds[o + 3], b.bounds[o + 4], b.bounds[o + 5]);
+        }
     }
 
     /**
@@ -145,16 +209,21 @@ public final class BVH {
         }
     }
 
-    /** Nodes of the binary tree, leaves included. */
+    /** Nodes of the traversal tree, leaves included: 4-wide interior nodes plus leaves. */
     public int nodeCount() {
-        return nodeCount;
+        return wideNodeCount + leafCount;
+    }
+
+    /** Interior nodes of the binary SAH tree the traversal tree was collapsed from, plus its leaves. */
+    public int binaryNodeCount() {
+        return binaryNodeCount;
     }
 
     public int leafCount() {
         return leafCount;
     }
 
-    /** Depth of the deepest leaf (the root is depth 0). */
+    /** Depth of the deepest leaf of the binary SAH tree (the root is depth 0). */
     public int depth() {
         return maxDepth;
     }
@@ -165,56 +234,59 @@ public final class BVH {
 
     /** Bytes held by the node and order arrays. */
     public long bytes() {
-        return 4L * nodes.length + 4L * order.length + axes.length + 4L * rootBounds.length;
+        return 4L * nodes.length + 4L * order.length + 4L * rootBounds.length;
     }
 
     /** The box around everything in the tree. */
     public BoundingBox bounds() {
-        return box(rootBounds, 0);
+        return new BoundingBox(
+                rootBounds[0], rootBounds[1], rootBounds[2], rootBounds[3], rootBounds[4], rootBounds[5]);
     }
 
     /**
-     * Node {@code i} of the binary tree in depth-first order (0 is the root), for inspection and tests: it walks
+     * Node {@code i} of the traversal tree in depth-first order (0 is the root), for inspection and tests: it walks
      * the whole tree, so prefer {@link #nodes()} to look at many.
      */
     public BVHNode node(int i) {
-        if (i < 0 || i >= nodeCount) {
-            throw new IllegalArgumentException("node index must be in [0, " + nodeCount + "), but was " + i);
+        if (i < 0 || i >= nodeCount()) {
+            throw new IllegalArgumentException("node index must be in [0, " + nodeCount() + "), but was " + i);
         }
         return nodes().get(i);
     }
 
-    /** All nodes of the binary tree in depth-first order, leaves included (allocates; for inspection and tests). */
+    /** All nodes of the traversal tree in depth-first order, leaves included (allocates; for inspection and tests). */
     public List<BVHNode> nodes() {
-        List<BVHNode> list = new ArrayList<>(nodeCount);
+        List<BVHNode> list = new ArrayList<>(nodeCount());
         collect(bounds(), rootLink, rootCount, list);
         return list;
     }
 
     private void collect(BoundingBox box, int link, int count, List<BVHNode> list) {
         if (count > 0) {
-            list.add(new BVHNode(box, link, count, -1, -1));
+            list.add(new BVHNode(box, link, count, List.of()));
             return;
         }
         int self = list.size();
-        list.add(null); // replaced once the second child's index is known
+        list.add(null); // replaced once the children's indices are known
         int o = NODE_STRIDE * link;
-        collect(box(nodes, o), childLink(o, 0), childCount(o, 0), list);
-        int second = list.size();
-        collect(box(nodes, o + SECOND_BOX), childLink(o, 1), childCount(o, 1), list);
-        list.set(self, new BVHNode(box, -1, 0, second, axes[link]));
+        List<Integer> children = new ArrayList<>(WIDTH);
+        for (int c = 0; c < WIDTH; c++) {
+            if (!(nodes[o + MIN_X + c] <= nodes[o + MAX_X + c])) continue; // an unused slot
+            children.add(list.size());
+            BoundingBox childBox = new BoundingBox(
+                    nodes[o + MIN_X + c],
+                    nodes[o + MIN_Y + c],
+                    nodes[o + MIN_Z + c],
+                    nodes[o + MAX_X + c],
+                    nodes[o + MAX_Y + c],
+                    nodes[o + MAX_Z + c]);
+            collect(childBox, intAt(o + LINK + c), intAt(o + COUNT + c), list);
+        }
+        list.set(self, new BVHNode(box, -1, 0, List.copyOf(children)));
     }
 
-    private int childLink(int o, int child) {
-        return Float.floatToRawIntBits(nodes[o + FIRST_LINK + 2 * child]);
-    }
-
-    private int childCount(int o, int child) {
-        return Float.floatToRawIntBits(nodes[o + FIRST_COUNT + 2 * child]);
-    }
-
-    private static BoundingBox box(float[] f, int o) {
-        return new BoundingBox(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5]);
+    private int intAt(int i) {
+        return Float.floatToRawIntBits(nodes[i]);
     }
 
     /** Original index of the primitive at position {@code k} of the leaf order. */
@@ -422,7 +494,7 @@ public final class BVH {
             leafCount++;
         }
 
-        private static double surfaceArea(double x0, double y0, double z0, double x1, double y1, double z1) {
+        static double surfaceArea(double x0, double y0, double z0, double x1, double y1, double z1) {
             double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;
             return 2 * (ex * ey + ey * ez + ez * ex);
         }

@@ -217,7 +217,7 @@ public final class BoundingBox {
      * Margin on slab distances as a fraction of their magnitude (the 2 gamma(3) of {@link #FAR_SCALE}), applied to
      * both ends so it widens the slab whatever the sign of the distances.
      */
-    private static final double SLAB_SLACK = 2 * primitives.Util.gamma(3);
+    static final double SLAB_SLACK = 2 * primitives.Util.gamma(3);
 
     @Override
     public boolean equals(Object obj) {

@@ -34,9 +34,11 @@ public final class HitRecord {
     public double errorX, errorY, errorZ;
 
     /** Traversal stack of the BVH: link and count of each postponed child, and where the ray enters its box. */
-    final int[] stack = new int[2 * (BVH.MAX_DEPTH + 2)];
+    final int[] stack = new int[2 * BVH.STACK_SIZE];
 
-    final double[] stackEntry = new double[BVH.MAX_DEPTH + 2];
+    final double[] stackEntry = new double[BVH.STACK_SIZE];
+    /** Where the ray enters each child box of the node being visited. */
+    final double[] entries = new double[BVH.WIDTH];
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */
     public long nodeVisits, primitiveTests;

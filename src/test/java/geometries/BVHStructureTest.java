@@ -32,10 +32,15 @@ class BVHStructureTest {
                     assertTrue(contains(node.bounds(), boxes, p), "leaf " + i + " holds primitive " + p);
                 }
             } else {
-                // Depth-first: the first child follows its parent.
-                assertTrue(node.secondChild() > i + 1 && node.axis() >= 0 && node.axis() < 3, "node " + i);
-                assertTrue(encloses(node.bounds(), nodes.get(i + 1).bounds()), "first child of " + i);
-                assertTrue(encloses(node.bounds(), nodes.get(node.secondChild()).bounds()), "second child of " + i);
+                // Two to four children, depth-first: the first child follows its parent, the others come in order.
+                List<Integer> children = node.children();
+                assertTrue(children.size() >= 2 && children.size() <= BVH.WIDTH, "node " + i + " " + children);
+                assertEquals(i + 1, children.get(0), "first child of " + i);
+                for (int c = 0; c < children.size(); c++) {
+                    if (c > 0) assertTrue(children.get(c) > children.get(c - 1), "children of " + i + " in order");
+                    assertTrue(
+                            encloses(node.bounds(), nodes.get(children.get(c)).bounds()), "child " + c + " of " + i);
+                }
             }
         }
         assertEquals(bvh.leafCount(), leaves);

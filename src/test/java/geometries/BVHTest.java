@@ -65,7 +65,9 @@ class BVHTest {
         assertEquals(n, leafPrimitives[0], "leaves hold every primitive once");
         for (int i = 0; i < n; i++) assertTrue(seen[i], "primitive " + i + " in a leaf (seed " + seed + ")");
         assertTrue(bvh.depth() <= BVH.MAX_DEPTH);
-        assertEquals(bvh.nodeCount(), 2 * bvh.leafCount() - 1, "a binary tree");
+        assertEquals(bvh.binaryNodeCount(), 2 * bvh.leafCount() - 1, "collapsed from a binary tree");
+        // Every 4-wide node absorbs at least one binary interior node.
+        assertTrue(bvh.nodeCount() - bvh.leafCount() <= bvh.leafCount() - 1, "fewer interior nodes than binary");
     }
 
     /** Walks the subtree at {@code node}; returns the index after it (depth-first layout). */
@@ -95,14 +97,15 @@ class BVHTest {
                     "leaf of " + n.primitiveCount());
             return node + 1;
         }
-        assertTrue(n.axis() >= 0 && n.axis() <= 2);
-        // first child follows its parent; the second child's index is stored
-        int afterFirst = check(bvh, node + 1, boxes, seen, count, maxLeaf, depth + 1);
-        assertEquals(afterFirst, n.secondChild(), "second child after the first subtree");
-        for (int child : new int[] {node + 1, n.secondChild()}) {
+        assertTrue(n.children().size() >= 2 && n.children().size() <= BVH.WIDTH, "2 to 4 children");
+        // first child follows its parent; each further child follows the subtree of the one before
+        int next = node + 1;
+        for (int child : n.children()) {
+            assertEquals(next, child, "child after the subtree before it");
             BoundingBox c = bvh.node(child).bounds();
             assertEquals(b, b.union(c), "parent box holds child " + child);
+            next = check(bvh, child, boxes, seen, count, maxLeaf, depth + 1);
         }
-        return check(bvh, n.secondChild(), boxes, seen, count, maxLeaf, depth + 1);
+        return next;
     }
 }

@@ -1,0 +1,86 @@
+package geometries;
+
+import primitives.Ray;
+
+/**
+ * The slab test of the {@link BVH#WIDTH} child boxes of a BVH node, the traversal's inner kernel. Two
+ * implementations give bit-identical answers: a scalar one, and one on the JDK's incubating Vector API that tests
+ * the four boxes at once. The vectorized one is chosen at startup when the JVM was started with
+ * {@code --add-modules jdk.incubator.vector}; without the flag the library runs the scalar one.
+ *
+ * <p>For each child box the test finds where the ray enters and leaves it within {@code (tMin, tMax)}, with the
+ * conservative margins of {@link BoundingBox#entry}: the ray's direction signs say which plane of each slab is
+ * entered first, the near distance is the largest entering one and the far distance the smallest leaving one,
+ * and both are widened by {@code 2 gamma(3)} of their magnitude.
+ */
+abstract class WideBoxTest {
+    /**
+     * The kernel this JVM runs: vectorized if the Vector API module is present and the CPU has 256-bit vectors,
+     * scalar otherwise.
+     */
+    static final WideBoxTest SELECTED = select();
+
+    /**
+     * Tests the child boxes of the node at offset {@code o} of {@code nodes}: writes where the ray enters each within
+     * {@code (tMin, tMax)}, or {@link BoundingBox#MISS}, to {@code entries[0..WIDTH)} and returns the mask of the
+     * children hit (bit c for child c).
+     *
+     * @param signs the ray's {@link BoundingBox#directionSigns}
+     */
+    abstract int test(float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries);
+
+    /** A short name for reports: "vector" or "scalar". */
+    abstract String name();
+
+    private static WideBoxTest select() {
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) {
+            try {
+                // By name, so that without the module the vectorized class is never loaded.
+                return (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
+                        .getDeclaredConstructor()
+                        .newInstance();
+            } catch (ReflectiveOperationException | LinkageError e) {
+                return new ScalarWideBoxTest();
+            }
+        }
+        return new ScalarWideBoxTest();
+    }
+
+    /**
+     * The scalar test for rays with a zero (or subnormal) direction component: their slab distances may be
+     * {@code 0 * inf = NaN} when the ray lies in a slab's plane, and comparisons ignore the NaN there. Rare, so
+     * both implementations share it.
+     */
+    static int testWithInfiniteReciprocals(
+            float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries) {
+        int mask = 0;
+        for (int c = 0; c < BVH.WIDTH; c++) {
+            double e = entryWithInfiniteReciprocals(nodes, o + c, ray, signs, tMin, tMax);
+            entries[c] = e;
+            if (e < BoundingBox.MISS) mask |= 1 << c;
+        }
+        return mask;
+    }
+
+    private static double entryWithInfiniteReciprocals(
+            float[] nodes, int o, Ray ray, int signs, double tMin, double tMax) {
+        int sx = (signs & 1) * BVH.MAX_X, sy = (signs >> 1 & 1) * BVH.MAX_X, sz = (signs >> 2 & 1) * BVH.MAX_X;
+        double nx = (nodes[o + BVH.MIN_X + sx] - ray.ox) * ray.invDx;
+        double fx = (nodes[o + BVH.MAX_X - sx] - ray.ox) * ray.invDx;
+        double ny = (nodes[o + BVH.MIN_Y + sy] - ray.oy) * ray.invDy;
+        double fy = (nodes[o + BVH.MAX_Y - sy] - ray.oy) * ray.invDy;
+        double nz = (nodes[o + BVH.MIN_Z + sz] - ray.oz) * ray.invDz;
+        double fz = (nodes[o + BVH.MAX_Z - sz] - ray.oz) * ray.invDz;
+        // "nx > near" is false for NaN, so a NaN slab leaves the interval unchanged.
+        double near = tMin, far = tMax;
+        if (nx > near) near = nx;
+        if (ny > near) near = ny;
+        if (nz > near) near = nz;
+        if (fx < far) far = fx;
+        if (fy < far) far = fy;
+        if (fz < far) far = fz;
+        near -= Math.abs(near) * BoundingBox.SLAB_SLACK;
+        far += Math.abs(far) * BoundingBox.SLAB_SLACK;
+        return near <= far ? near : BoundingBox.MISS;
+    }
+}

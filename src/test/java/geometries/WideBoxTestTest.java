@@ -1,0 +1,122 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * The two kernels of {@link WideBoxTest}: the JVM picks the vectorized one exactly when the Vector API module is
+ * present (surefire runs the BVH tests both with and without it), and both give the same masks and the same
+ * entry distances, on random boxes and rays and on the hard cases: rays in a box's face plane, with zero direction
+ * components, from inside a box, toward empty slots, through flat boxes.
+ */
+class WideBoxTestTest {
+    private static final boolean VECTOR_MODULE =
+            ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
+
+    @Test
+    void theVectorizedKernelRunsExactlyWhenTheModuleIsPresent() throws ReflectiveOperationException {
+        assertEquals(VECTOR_MODULE && wideVectors() ? "vector" : "scalar", WideBoxTest.SELECTED.name());
+    }
+
+    /** Whether the CPU has 256-bit vectors (asked by reflection: this class must load without the module). */
+    private static boolean wideVectors() throws ReflectiveOperationException {
+        Class<?> doubles = Class.forName("jdk.incubator.vector.DoubleVector");
+        Object preferred = doubles.getField("SPECIES_PREFERRED").get(null);
+        Class<?> species = Class.forName("jdk.incubator.vector.VectorSpecies");
+        return (int) species.getMethod("vectorBitSize").invoke(preferred) >= 256;
+    }
+
+    @Test
+    void scalarAndVectorKernelsAgree() throws ReflectiveOperationException {
+        assumeTrue(VECTOR_MODULE && wideVectors(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
+        WideBoxTest vector = (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
+                .getDeclaredConstructor()
+                .newInstance();
+        WideBoxTest scalar = new ScalarWideBoxTest();
+        SplittableRandom random = new SplittableRandom(42);
+        float[] nodes = new float[BVH.NODE_STRIDE];
+        double[] a = new double[BVH.WIDTH], b = new double[BVH.WIDTH];
+        int hits = 0;
+        for (int i = 0; i < 100_000; i++) {
+            randomNode(nodes, random);
+            Ray ray = randomRay(nodes, random);
+            double tMin = random.nextInt(4) == 0 ? random.nextDouble() : 0;
+            double tMax = random.nextInt(3) == 0 ? tMin + 5 * random.nextDouble() : Double.POSITIVE_INFINITY;
+            int signs = BoundingBox.directionSigns(ray);
+            int maskA = scalar.test(nodes, 0, ray, signs, tMin, tMax, a);
+            int maskB = vector.test(nodes, 0, ray, signs, tMin, tMax, b);
+            String where = "case " + i + ": " + ray + " in (" + tMin + ", " + tMax + ")";
+            assertEquals(maskA, maskB, where);
+            for (int c = 0; c < BVH.WIDTH; c++) {
+                // Equal as numbers: bit for bit, but for the sign of a zero (see VectorWideBoxTest.max).
+                assertTrue(a[c] == b[c], where + " child " + c + ": " + a[c] + " vs " + b[c]);
+            }
+            hits += Integer.bitCount(maskA);
+        }
+        // The cases must exercise both answers.
+        assertTrue(hits > 20_000 && hits < 380_000, "hits " + hits);
+    }
+
+    @Test
+    void emptySlotsAreNeverHit() {
+        float[] nodes = new float[BVH.NODE_STRIDE];
+        for (int c = 0; c < BVH.WIDTH; c++) {
+            for (int a = 0; a < 3; a++) {
+                nodes[BVH.MIN_X + BVH.WIDTH * a + c] = Float.POSITIVE_INFINITY;
+                nodes[BVH.MAX_X + BVH.WIDTH * a + c] = Float.NEGATIVE_INFINITY;
+            }
+        }
+        double[] entries = new double[BVH.WIDTH];
+        Vector[] directions = {
+            new Vector(1, 2, 3), new Vector(-1, 2, -3), new Vector(0, 0, 1), new Vector(0, -1, 0), new Vector(1, 0, 0)
+        };
+        for (Vector d : directions) {
+            Ray ray = new Ray(new Point(0.5, -0.25, 2), d);
+            int signs = BoundingBox.directionSigns(ray);
+            assertEquals(0, WideBoxTest.SELECTED.test(nodes, 0, ray, signs, 0, Double.POSITIVE_INFINITY, entries));
+            assertArrayEquals(
+                    new double[] {BoundingBox.MISS, BoundingBox.MISS, BoundingBox.MISS, BoundingBox.MISS}, entries);
+        }
+    }
+
+    /** Four boxes: mostly random, some flat, some sharing face planes, some empty slots. */
+    private static void randomNode(float[] nodes, SplittableRandom random) {
+        for (int c = 0; c < BVH.WIDTH; c++) {
+            boolean empty = random.nextInt(8) == 0;
+            for (int a = 0; a < 3; a++) {
+                float lo = (float) (random.nextInt(4) == 0 ? random.nextInt(3) - 1 : 4 * random.nextDouble() - 2);
+                float hi = random.nextInt(6) == 0 ? lo : lo + (float) (2 * random.nextDouble());
+                nodes[BVH.MIN_X + BVH.WIDTH * a + c] = empty ? Float.POSITIVE_INFINITY : lo;
+                nodes[BVH.MAX_X + BVH.WIDTH * a + c] = empty ? Float.NEGATIVE_INFINITY : hi;
+            }
+        }
+    }
+
+    /**
+     * Rays from random points or box corners toward a random point of a random box (so about half the tests hit),
+     * some along the axes or in a coordinate plane.
+     */
+    private static Ray randomRay(float[] nodes, SplittableRandom random) {
+        double[] o = new double[3], d = new double[3];
+        int corner = random.nextInt(BVH.WIDTH), target = random.nextInt(BVH.WIDTH);
+        for (int a = 0; a < 3; a++) {
+            o[a] = random.nextInt(3) == 0
+                    ? nodes[(random.nextBoolean() ? BVH.MIN_X : BVH.MAX_X) + BVH.WIDTH * a + corner]
+                    : 8 * random.nextDouble() - 4;
+            if (!Double.isFinite(o[a])) o[a] = 0.5;
+            double lo = nodes[BVH.MIN_X + BVH.WIDTH * a + target], hi = nodes[BVH.MAX_X + BVH.WIDTH * a + target];
+            double aim = lo <= hi ? lo + random.nextDouble() * (hi - lo) : random.nextDouble();
+            d[a] = random.nextInt(5) == 0 ? 0 : aim - o[a] + 0.2 * (random.nextDouble() - 0.5);
+        }
+        if (d[0] == 0 && d[1] == 0 && d[2] == 0) d[2] = 1;
+        return new Ray(new Point(o[0], o[1], o[2]), new Vector(d[0], d[1], d[2]));
+    }
+}
