@@ -4,9 +4,6 @@ import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
@@ -131,13 +128,6 @@ public final class FeatureGallery {
         g.drawString("off", 6, 16);
         g.drawString("on: " + caption, w + gap + 6, 16);
         g.dispose();
-        try {
-            Files.createDirectories(file.getParent());
-            Path temp = Files.createTempFile(file.getParent(), ".features", ".tmp");
-            ImageIO.write(out, "png", temp.toFile());
-            Files.move(temp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + file, e);
-        }
+        renderer.AtomicFile.write(file, "image", temp -> ImageIO.write(out, "png", temp.toFile()));
     }
 }

@@ -1,12 +1,9 @@
 package obj;
 
 import geometries.Mesh;
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 
 /**
  * Writes a {@link Mesh} as a Wavefront OBJ file that {@link ObjReader} reads back to the same doubles: {@code v}
@@ -56,14 +53,7 @@ public final class ObjWriter {
 
     /** Writes {@code mesh} to {@code file} through a temporary file moved into place. */
     public static void write(Mesh mesh, Path file, String comment) {
-        try {
-            Path folder = file.toAbsolutePath().getParent();
-            Files.createDirectories(folder);
-            Path temp = Files.createTempFile(folder, "." + file.getFileName(), ".tmp");
-            Files.writeString(temp, toObj(mesh, comment), StandardCharsets.UTF_8);
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
-        }
+        String text = toObj(mesh, comment);
+        renderer.AtomicFile.write(file, "OBJ file", temp -> Files.writeString(temp, text, StandardCharsets.UTF_8));
     }
 }

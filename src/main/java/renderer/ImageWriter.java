@@ -2,11 +2,7 @@ package renderer;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import javax.imageio.ImageIO;
 import primitives.Color;
 
@@ -134,32 +130,10 @@ public class ImageWriter {
      * file beside it first and are moved into place only when complete.
      */
     public Path writeToImage(Path file) {
-        Path target = file.toAbsolutePath();
-        Path folder = target.getParent();
-        Path temp = null;
-        try {
-            Files.createDirectories(folder);
-            temp = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
+        return AtomicFile.write(file, "image", temp -> {
             if (!ImageIO.write(toBufferedImage(), "png", temp.toFile())) {
                 throw new IOException("no PNG writer is available in this JDK");
             }
-            try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-            temp = null;
-            return target;
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
-        } finally {
-            if (temp != null) {
-                try {
-                    Files.deleteIfExists(temp);
-                } catch (IOException ignored) {
-                    // the original error is the one worth reporting
-                }
-            }
-        }
+        });
     }
 }
