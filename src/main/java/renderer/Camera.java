@@ -437,8 +437,11 @@ public final class Camera implements Cloneable {
             int index = j * side + i;
             Color c = cache[index];
             if (c == null) {
-                double du = ((double) i / (side - 1) - 0.5) * pixelWidth;
-                double dv = ((double) j / (side - 1) - 0.5) * pixelHeight;
+                // Lattice points at the centres of a side x side grid of cells, not on the pixel's border: fully
+                // refined, the lattice is the GRID pattern of side^2 samples (a box filter over this pixel alone);
+                // points on the border would also be samples of the neighbouring pixels and blur the image.
+                double du = ((i + 0.5) / side - 0.5) * pixelWidth;
+                double dv = ((j + 0.5) / side - 0.5) * pixelHeight;
                 c = sample(u + du, v - dv, SampleStream.mix(seed, ADAPTIVE_PATHS + index), ctx);
                 cache[index] = c;
             }
