@@ -1,12 +1,9 @@
 package report;
 
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -14,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import renderer.AtomicFile;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.RayCounters;
@@ -42,7 +40,8 @@ public final class AccuracyReport {
                 new AntiAliasingExperiment(),
                 new SoftShadowExperiment(),
                 new DepthOfFieldExperiment(),
-                new GlossyExperiment());
+                new GlossyExperiment(),
+                new StreetExperiment());
     }
 
     private AccuracyReport() {}
@@ -60,6 +59,7 @@ public final class AccuracyReport {
         int width = o.width(), height = o.height(), repeats = o.repeats();
         int[] counts = o.counts();
         Path out = o.out();
+        List<Experiment> experiments = o.experiments();
         for (int i = 0; i < args.length; i++) {
             String value = i + 1 < args.length ? args[i + 1] : null;
             switch (args[i]) {
@@ -83,6 +83,10 @@ public final class AccuracyReport {
                     out = Path.of(require(value, "--out"));
                     i++;
                 }
+                case "--only" -> {
+                    experiments = only(require(value, "--only"));
+                    i++;
+                }
                 default ->
                     throw new IllegalArgumentException("unknown option '" + args[i]
                             + "'; allowed: --size WxH, --counts n1,n2,..., --repeats N, --out folder");
@@ -91,7 +95,21 @@ public final class AccuracyReport {
         if (width < 8 || height < 8 || repeats < 1 || counts.length < 2) {
             throw new IllegalArgumentException("need a size of at least 8x8, repeats >= 1 and two or more counts");
         }
-        return new Options(width, height, counts, repeats, out, o.experiments());
+        return new Options(width, height, counts, repeats, out, experiments);
+    }
+
+    /** The standard experiments named by their slugs, in the report's order; an unknown slug is rejected. */
+    static List<Experiment> only(String slugs) {
+        List<Experiment> all = standardExperiments();
+        List<String> known = all.stream().map(Experiment::slug).toList();
+        List<String> wanted = Arrays.asList(slugs.split(","));
+        for (String slug : wanted) {
+            if (!known.contains(slug)) {
+                throw new IllegalArgumentException(
+                        "unknown experiment '" + slug + "' in --only; allowed: " + String.join(", ", known));
+            }
+        }
+        return all.stream().filter(e -> wanted.contains(e.slug())).toList();
     }
 
     private static String require(String value, String option) {
@@ -101,36 +119,38 @@ public final class AccuracyReport {
 
     /** Runs every experiment of {@code options}, writes the outputs, returns all measurements. */
     public static List<Measurement> run(Options options, java.io.PrintStream log) {
-        int w = options.width(), h = options.height();
         Path folder = options.out().resolve("accuracy");
         List<Measurement> all = new ArrayList<>();
         StringBuilder markdown = new StringBuilder();
         markdown.append(String.format(
                 Locale.ROOT,
-                "# What accuracy costs%n%nImages %d x %d, %d render thread(s), time = median of %d runs.%n"
+                "# What accuracy costs%n%nImages %d x %d unless stated, %d render thread(s), time = median of %d runs "
+                        + "(renders over %.0f s run once).%n"
                         + "Error = RMSE over pixels and channels (0..255, clamped as displayed) and the 99th "
                         + "percentile of the per-pixel error, against a converged reference.%n",
-                w,
-                h,
+                options.width(),
+                options.height(),
                 Runtime.getRuntime().availableProcessors(),
-                options.repeats()));
+                options.repeats(),
+                SLOW_RENDER_SECONDS));
         for (Experiment experiment : options.experiments()) {
-            log.println("== " + experiment.name());
+            int[] size = experiment.size(options.width(), options.height());
+            int w = size[0], h = size[1];
+            int[] counts = experiment.counts(options.counts());
+            log.println("== " + experiment.name() + " (" + w + " x " + h + ")");
             Camera referenceCamera = experiment.reference(w, h).renderImage();
             ImageWriter reference = referenceCamera.getImage();
             double referenceSeconds = referenceCamera.getLastStatistics().wallSeconds();
             writePng(folder.resolve(experiment.slug() + "-reference.png"), reference.toBufferedImage());
-            experiment
-                    .camera(experiment.variants().get(0), options.counts()[1], w, h)
-                    .renderImage(); // warm-up
+            experiment.camera(experiment.variants().get(0), counts[1], w, h).renderImage(); // warm-up
             Map<String, List<Measurement>> byVariant = new LinkedHashMap<>();
             List<Variant> variants = experiment.variants();
-            ImageWriter[][] crops = new ImageWriter[variants.size()][options.counts().length + 1];
+            ImageWriter[][] crops = new ImageWriter[variants.size()][counts.length + 1];
             for (int v = 0; v < variants.size(); v++) {
                 Variant variant = variants.get(v);
                 List<Measurement> series = new ArrayList<>();
-                for (int c = 0; c < options.counts().length; c++) {
-                    int n = options.counts()[c];
+                for (int c = 0; c < counts.length; c++) {
+                    int n = counts[c];
                     Timed t = time(experiment, variant, n, w, h, options.repeats());
                     ImageError error = ImageError.between(t.image, reference);
                     RayCounters rays = t.rays;
@@ -155,7 +175,7 @@ public final class AccuracyReport {
                             m.rmse(),
                             m.p99());
                 }
-                crops[v][options.counts().length] = reference;
+                crops[v][counts.length] = reference;
                 byVariant.put(variant.label(), series);
                 all.addAll(series);
             }
@@ -164,31 +184,34 @@ public final class AccuracyReport {
                     options.out().resolve("accuracy-" + experiment.slug() + ".png"),
                     Charts.convergence(experiment.name(), experiment.sampleUnit(), byVariant));
             List<String> columns = new ArrayList<>();
-            for (int n : options.counts()) columns.add(n + (n == 1 ? " sample" : " samples"));
+            for (int n : counts) columns.add(n + (n == 1 ? " sample" : " samples"));
             columns.add("reference");
             writePng(
                     options.out().resolve("accuracy-" + experiment.slug() + "-crops.png"),
                     Crops.grid(variants.stream().map(Variant::label).toList(), columns, crops, experiment.crop()));
-            markdown.append(section(experiment, byVariant, referenceSeconds));
+            markdown.append(section(experiment, byVariant, referenceSeconds, w, h));
         }
         write(folder.resolve("report.md"), markdown.toString());
         return all;
     }
+
+    /** A render slower than this is timed once: its time is far above the noise, and repeats would cost minutes. */
+    static final double SLOW_RENDER_SECONDS = 5;
 
     private record Timed(ImageWriter image, double seconds, RayCounters rays) {}
 
     private static Timed time(Experiment experiment, Variant variant, int samples, int w, int h, int repeats) {
         double[] seconds = new double[repeats];
         Camera camera = null;
-        for (int r = 0; r < repeats; r++) {
+        int runs = 0;
+        while (runs < repeats) {
             camera = experiment.camera(variant, samples, w, h).renderImage();
-            seconds[r] = camera.getLastStatistics().wallSeconds();
+            seconds[runs++] = camera.getLastStatistics().wallSeconds();
+            if (seconds[0] > SLOW_RENDER_SECONDS) break;
         }
-        Arrays.sort(seconds);
+        Arrays.sort(seconds, 0, runs);
         return new Timed(
-                camera.getImage(),
-                seconds[repeats / 2],
-                camera.getLastStatistics().rays());
+                camera.getImage(), seconds[runs / 2], camera.getLastStatistics().rays());
     }
 
     private static String csv(Map<String, List<Measurement>> byVariant) {
@@ -198,14 +221,23 @@ public final class AccuracyReport {
     }
 
     /** The Markdown section of one experiment: the measurements, and the fitted slopes per variant. */
-    static String section(Experiment experiment, Map<String, List<Measurement>> byVariant, double referenceSeconds) {
+    static String section(
+            Experiment experiment,
+            Map<String, List<Measurement>> byVariant,
+            double referenceSeconds,
+            int width,
+            int height) {
         StringBuilder s = new StringBuilder();
         s.append(String.format(
                 Locale.ROOT,
-                "%n## %s (%s)%n%nReference: %.2f s.%n%n",
+                "%n## %s (%s)%n%n%d x %d pixels. Reference: %.2f s.%n%n",
                 experiment.name(),
                 experiment.sampleUnit(),
+                width,
+                height,
                 referenceSeconds));
+        if (!experiment.description().isEmpty())
+            s.append(experiment.description()).append("\n\n");
         s.append("| variant | samples | time (s) | rays | RMSE | p99 |\n|---|---:|---:|---:|---:|---:|\n");
         byVariant
                 .values()
@@ -236,28 +268,43 @@ public final class AccuracyReport {
                     byTime.slope(),
                     byTime.factorToHalveError()));
         }
+        s.append(lowDiscrepancyVersusRandom(byVariant));
+        String verdict = experiment.verdict(byVariant);
+        if (!verdict.isEmpty()) s.append('\n').append(verdict);
         return s.toString();
     }
 
-    private static void write(Path file, String text) {
-        try {
-            Files.createDirectories(file.getParent());
-            Path temp = Files.createTempFile(file.getParent(), "." + file.getFileName(), ".tmp");
-            Files.writeString(temp, text, StandardCharsets.UTF_8);
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
+    /** At how many of the measured counts above one the HALTON pattern had a lower RMSE than RANDOM. */
+    static String lowDiscrepancyVersusRandom(Map<String, List<Measurement>> byVariant) {
+        List<Measurement> halton = byVariant.get(Variant.HALTON.label()),
+                random = byVariant.get(Variant.RANDOM.label());
+        if (halton == null || random == null) return "";
+        int better = 0, compared = 0;
+        StringBuilder ratios = new StringBuilder();
+        for (int i = 0; i < Math.min(halton.size(), random.size()); i++) {
+            if (halton.get(i).samples() <= 1) continue;
+            compared++;
+            if (halton.get(i).rmse() < random.get(i).rmse()) better++;
+            ratios.append(ratios.length() == 0 ? "" : ", ")
+                    .append(String.format(
+                            Locale.ROOT,
+                            "%d: %.2f",
+                            halton.get(i).samples(),
+                            halton.get(i).rmse() / random.get(i).rmse()));
         }
+        return String.format(
+                Locale.ROOT,
+                "%nHALTON beats RANDOM at %d of %d sample counts above one (RMSE ratio halton/random by count: %s).%n",
+                better,
+                compared,
+                ratios);
+    }
+
+    private static void write(Path file, String text) {
+        AtomicFile.write(file, "report file", temp -> Files.writeString(temp, text, StandardCharsets.UTF_8));
     }
 
     private static void writePng(Path file, BufferedImage image) {
-        try {
-            Files.createDirectories(file.getParent());
-            Path temp = Files.createTempFile(file.getParent(), "." + file.getFileName(), ".tmp");
-            ImageIO.write(image, "png", temp.toFile());
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
-        }
+        AtomicFile.write(file, "image", temp -> ImageIO.write(image, "png", temp.toFile()));
     }
 }

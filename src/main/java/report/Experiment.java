@@ -1,6 +1,7 @@
 package report;
 
 import java.util.List;
+import java.util.Map;
 import renderer.Camera;
 
 /**
@@ -28,4 +29,24 @@ public interface Experiment {
 
     /** The region shown in the crops, as fractions of the image: x, y, width, height. */
     double[] crop();
+
+    /** The sample counts to measure, given the report's; by default the report's own. */
+    default int[] counts(int[] requested) {
+        return requested;
+    }
+
+    /** The image size to render, given the report's {@code width x height}; by default the report's own. */
+    default int[] size(int width, int height) {
+        return new int[] {width, height};
+    }
+
+    /** What the variants mean, when the labels alone do not say it; empty by default. */
+    default String description() {
+        return "";
+    }
+
+    /** A sentence on the experiment's target, from its measurements; empty when it has none. */
+    default String verdict(Map<String, List<Measurement>> byVariant) {
+        return "";
+    }
 }
