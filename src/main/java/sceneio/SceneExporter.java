@@ -74,7 +74,7 @@ public final class SceneExporter {
         this.prefix = name.endsWith(".json") ? name.substring(0, name.length() - 5) : name;
     }
 
-    /** Writes {@code scene} seen by {@code camera} to {@code jsonFile} and its meshes to {@code models/}. */
+    /** Writes {@code scene} seen by {@code camera} to {@code jsonFile} and its meshes to {@code models/<name>/mesh-N.obj}. */
     public static SceneDocument export(Scene scene, Camera camera, Path jsonFile) {
         SceneExporter exporter = new SceneExporter(jsonFile);
         SceneDocument document = exporter.document(scene, camera);
@@ -132,7 +132,7 @@ public final class SceneExporter {
         }
         if (g instanceof Tube t) return new TubeDocument(t.getRadius(), axis(t.getAxis()), material, emission);
         if (g instanceof Mesh m) {
-            String file = "models/" + prefix + "-mesh-" + meshes++ + ".obj";
+            String file = "models/" + prefix + "/mesh-" + meshes++ + ".obj";
             ObjWriter.write(
                     m, folder.resolve(file), "mesh of scene " + prefix + " (" + m.triangleCount() + " triangles)");
             return new MeshDocument(file, null, null, m.getNormals() != null ? null : false, material, emission);

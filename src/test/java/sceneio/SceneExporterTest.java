@@ -74,7 +74,7 @@ class SceneExporterTest {
                 .build();
         Path file = dir.resolve("mesh.json");
         SceneExporter.export(scene, camera, file);
-        assertTrue(Files.exists(dir.resolve("models/mesh-mesh-0.obj")));
+        assertTrue(Files.exists(dir.resolve("models/mesh/mesh-0.obj")));
         Intersectable only = loadedGeometry(file);
         Mesh back = (Mesh) only;
         assertArrayEquals(sphere.getVertices(), back.getVertices());
