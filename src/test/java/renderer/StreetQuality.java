@@ -19,7 +19,7 @@ import java.util.Locale;
 record StreetQuality(
         String name, int width, int height, int aaSamples, int shadowSamples, int bvhOffWidth, double cheapSeconds) {
     static final StreetQuality PREVIEW = new StreetQuality("preview", 320, 200, 9, 9, 96, 2);
-    static final StreetQuality FULL = new StreetQuality("full", 1600, 1000, 81, 81, 400, 120);
+    static final StreetQuality FULL = new StreetQuality("full", 1600, 1000, 81, 81, 400, 30);
 
     /** The quality selected by the system property {@code street.quality} ({@code preview} or {@code full}). */
     static StreetQuality fromSystemProperty() {
