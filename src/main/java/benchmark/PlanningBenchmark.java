@@ -1,6 +1,8 @@
 package benchmark;
 
 import app.Showcase;
+import app.StreetOptions;
+import app.StreetScene;
 import geometries.Plane;
 import geometries.Sphere;
 import java.util.Arrays;
@@ -62,9 +64,13 @@ public final class PlanningBenchmark {
         }
     }
 
-    /** Scenes other benchmarks contribute (the street scene); empty by default. */
+    /** The street scene: hard lamps at the README main job's size, and soft lamps (16 rays each) smaller. */
     static Map<String, Supplier<Camera.Builder>> extraScenes() {
-        return Map.of();
+        Map<String, Supplier<Camera.Builder>> street = new LinkedHashMap<>();
+        StreetScene hard = new StreetScene(StreetOptions.HARD), soft = new StreetScene(StreetOptions.soft(10, 16));
+        street.put("street, hard lamps (6,733 primitives, 12 lights), 800x500", () -> hard.camera(800, 500));
+        street.put("street, soft lamps (16 rays), 400x250", () -> soft.camera(400, 250));
+        return street;
     }
 
     private record Result(double seconds, RayCounters rays) {}
