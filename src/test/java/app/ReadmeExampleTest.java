@@ -7,6 +7,8 @@ import geometries.Plane;
 import geometries.Sphere;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
 import lighting.AmbientLight;
 import lighting.PointLight;
 import org.junit.jupiter.api.Test;
@@ -56,5 +58,18 @@ class ReadmeExampleTest {
                 floor = camera.getImage().getPixel(20, 280);
         assertTrue(sphere.getR() > 100 && sphere.getR() > 1.4 * sphere.getG(), sphere.toString());
         assertTrue(floor.getR() > 10 && floor.getB() > 0.7 * floor.getR(), floor.toString());
+    }
+
+    @Test
+    void theReadmeShowsExactlyThisExample() throws java.io.IOException {
+        List<String> source = Files.readAllLines(Path.of("src/test/java/app/ReadmeExampleTest.java"));
+        int begin = source.indexOf("        // --- README example begins"),
+                end = source.indexOf("        // --- README example ends");
+        assertTrue(begin > 0 && end > begin, "markers in the test source");
+        String example = source.subList(begin + 1, end).stream()
+                .map(line -> line.substring(Math.min(8, line.length())))
+                .collect(Collectors.joining("\n"));
+        String readme = Files.readString(Path.of("README.md"));
+        assertTrue(readme.contains("```java\n" + example + "\n```"), "README.md must show the example of this test");
     }
 }
