@@ -1,7 +1,10 @@
 package benchmark;
 
+import app.StreetOptions;
+import app.StreetScene;
 import geometries.Accelerator;
 import geometries.BoundingBox;
+import geometries.Geometries;
 import geometries.Intersectable;
 import geometries.Meshes;
 import java.lang.management.ManagementFactory;
@@ -57,7 +60,24 @@ public final class BvhBenchmark {
                     () -> BenchmarkScenes.spheresAndPolygons(200, 200, SEED),
                     new Point(0, -45, 15),
                     new Point(0, 0, 3),
-                    UP_Z));
+                    UP_Z),
+            new Workload(
+                    "street",
+                    () -> new StreetScene(StreetOptions.HARD).scene().geometries,
+                    StreetScene.CAMERA_LOCATION,
+                    StreetScene.CAMERA_TARGET,
+                    UP_Z,
+                    boundedPart(new StreetScene(StreetOptions.HARD).scene().geometries)));
+
+    /** The union of the bounded members' boxes: where incoherent rays start in a scene with a ground plane. */
+    static BoundingBox boundedPart(Geometries scene) {
+        BoundingBox box = null;
+        for (Intersectable member : scene.getMembers()) {
+            BoundingBox b = member.getBoundingBox();
+            if (b != null) box = box == null ? b : box.union(b);
+        }
+        return box;
+    }
 
     private final int runs;
     private final int[] threadCounts;
@@ -163,7 +183,7 @@ public final class BvhBenchmark {
                 bytesPerPrimitive,
                 (double) bvh.bytes() / primitives));
 
-        BoundingBox box = bvh.getBoundingBox();
+        BoundingBox box = workload.rayBox() != null ? workload.rayBox() : bvh.getBoundingBox();
         Ray[] coherent =
                 RaySets.pinhole(workload.eye(), workload.target(), workload.up(), FOV_DEGREES, IMAGE_SIZE, IMAGE_SIZE);
         rows.add(

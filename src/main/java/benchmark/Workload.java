@@ -1,5 +1,6 @@
 package benchmark;
 
+import geometries.BoundingBox;
 import geometries.Intersectable;
 import java.util.function.Supplier;
 import primitives.Point;
@@ -7,12 +8,20 @@ import primitives.Vector;
 
 /**
  * One row group of the BVH benchmark: a scene and the pinhole camera its coherent rays come from. Incoherent
- * rays start uniformly inside the scene's bounding box, so they need nothing more.
+ * rays start uniformly inside {@code rayBox}, by default the scene's bounding box (a scene with an unbounded
+ * member, such as the street's ground plane, names the box of its bounded part).
  *
  * @param name short label printed in the table
  * @param scene builds the scene (called once per build timing, so it must be deterministic)
  * @param eye camera position of the coherent rays
  * @param target point the camera looks at
  * @param up the camera's up direction
+ * @param rayBox where incoherent rays start; null for the scene's bounding box
  */
-public record Workload(String name, Supplier<Intersectable> scene, Point eye, Point target, Vector up) {}
+public record Workload(
+        String name, Supplier<Intersectable> scene, Point eye, Point target, Vector up, BoundingBox rayBox) {
+    /** A workload whose incoherent rays start in the bounding box of its (bounded) scene. */
+    public Workload(String name, Supplier<Intersectable> scene, Point eye, Point target, Vector up) {
+        this(name, scene, eye, target, up, null);
+    }
+}
