@@ -67,11 +67,11 @@ final class EdgeProbe {
         Material m = sp.geometry.getMaterial();
         Double3 kr = k.product(m.getKr()), kt = k.product(m.getKt());
         if (!m.getKr().isZero() && !kr.lowerThan(RenderSettings.DEFAULT.minAttenuation())) {
-            Vector r = SimpleRayTracer.reflect(v, n, nv);
+            Vector r = Optics.reflect(v, n, nv);
             follow(new Ray(sp.spawnOrigin(r.x, r.y, r.z), r), level - 1, kr, signature);
         }
         if (!m.getKt().isZero() && !kt.lowerThan(RenderSettings.DEFAULT.minAttenuation())) {
-            Vector t = SimpleRayTracer.refract(v, n, nv, m.getIndexOfRefraction());
+            Vector t = Optics.refract(v, n, nv, m.getIndexOfRefraction());
             follow(new Ray(sp.spawnOrigin(t.x, t.y, t.z), t), level - 1, kt, signature);
         }
     }

@@ -63,11 +63,11 @@ final class PenumbraProbe {
         if (nv == 0) return false;
         Double3 kr = k.product(m.getKr()), kt = k.product(m.getKt());
         if (!m.getKr().isZero() && !kr.lowerThan(minAttenuation)) {
-            Vector r = SimpleRayTracer.reflect(v, n, nv);
+            Vector r = Optics.reflect(v, n, nv);
             if (walk(new Ray(sp.spawnOrigin(r.x, r.y, r.z), r), level - 1, kr, rings, perRing)) return true;
         }
         if (!m.getKt().isZero() && !kt.lowerThan(minAttenuation)) {
-            Vector t = SimpleRayTracer.refract(v, n, nv, m.getIndexOfRefraction());
+            Vector t = Optics.refract(v, n, nv, m.getIndexOfRefraction());
             return walk(new Ray(sp.spawnOrigin(t.x, t.y, t.z), t), level - 1, kt, rings, perRing);
         }
         return false;
