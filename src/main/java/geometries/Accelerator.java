@@ -223,7 +223,27 @@ public final class Accelerator implements Intersectable {
                             count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + only]);
                             continue;
                         }
-                        // Push every child hit, order them so the nearest is on top, and take it.
+                        int rest = mask & (mask - 1);
+                        if ((rest & (rest - 1)) == 0) {
+                            // Two children hit (the commonest multi-hit case): one comparison orders them; push
+                            // the farther, take the nearer (the later one on a tie, as the sort below would).
+                            int a = Integer.numberOfTrailingZeros(mask), b = Integer.numberOfTrailingZeros(rest);
+                            double ea = entries[a], eb = entries[b];
+                            int far = a, near = b;
+                            double farEntry = ea;
+                            if (ea < eb) {
+                                far = b;
+                                near = a;
+                                farEntry = eb;
+                            }
+                            stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + far]);
+                            stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + far]);
+                            stackEntry[sp++] = farEntry;
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + near]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + near]);
+                            continue;
+                        }
+                        // Three or four: push every child hit, order them so the nearest is on top, and take it.
                         int base = sp;
                         do {
                             int c = Integer.numberOfTrailingZeros(mask);
