@@ -223,19 +223,115 @@ public final class Accelerator implements Intersectable {
                             count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + only]);
                             continue;
                         }
-                        // Push every child hit, order them so the nearest is on top, and take it.
-                        int base = sp;
-                        do {
-                            int c = Integer.numberOfTrailingZeros(mask);
-                            mask &= mask - 1;
-                            stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
-                            stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                            stackEntry[sp++] = entries[c];
-                        } while (mask != 0);
-                        sortNearestOnTop(stack, stackEntry, base, sp);
-                        sp--;
-                        link = stack[2 * sp];
-                        count = stack[2 * sp + 1];
+                        int rest = mask & (mask - 1);
+                        if ((rest & (rest - 1)) == 0) {
+                            // Two children hit (the commonest multi-hit case): one comparison orders them; push
+                            // the farther, take the nearer (the later one on a tie, as the sort below would).
+                            int a = Integer.numberOfTrailingZeros(mask), b = Integer.numberOfTrailingZeros(rest);
+                            double ea = entries[a], eb = entries[b];
+                            int far = a, near = b;
+                            double farEntry = ea;
+                            if (ea < eb) {
+                                far = b;
+                                near = a;
+                                farEntry = eb;
+                            }
+                            stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + far]);
+                            stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + far]);
+                            stackEntry[sp++] = farEntry;
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + near]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + near]);
+                            continue;
+                        }
+                        // Three or four: order them farthest first by a sorting network on registers, push all but
+                        // the nearest, take it.
+                        int c0 = Integer.numberOfTrailingZeros(mask), c1 = Integer.numberOfTrailingZeros(rest);
+                        rest &= rest - 1;
+                        int c2 = Integer.numberOfTrailingZeros(rest);
+                        rest &= rest - 1;
+                        double e0 = entries[c0], e1 = entries[c1], e2 = entries[c2];
+                        int t;
+                        double u;
+                        if (rest == 0) {
+                            // Three compare-exchanges sort (e0, e1, e2) into descending order.
+                            if (e0 < e1) {
+                                t = c0;
+                                c0 = c1;
+                                c1 = t;
+                                u = e0;
+                                e0 = e1;
+                                e1 = u;
+                            }
+                            if (e1 < e2) {
+                                t = c1;
+                                c1 = c2;
+                                c2 = t;
+                                u = e1;
+                                e1 = e2;
+                                e2 = u;
+                            }
+                            if (e0 < e1) {
+                                t = c0;
+                                c0 = c1;
+                                c1 = t;
+                                u = e0;
+                                e0 = e1;
+                                e1 = u;
+                            }
+                            push(stack, stackEntry, sp++, nodes, o, c0, e0);
+                            push(stack, stackEntry, sp++, nodes, o, c1, e1);
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c2]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c2]);
+                            continue;
+                        }
+                        int c3 = Integer.numberOfTrailingZeros(rest);
+                        double e3 = entries[c3];
+                        // Five compare-exchanges sort (e0, e1, e2, e3) into descending order.
+                        if (e0 < e1) {
+                            t = c0;
+                            c0 = c1;
+                            c1 = t;
+                            u = e0;
+                            e0 = e1;
+                            e1 = u;
+                        }
+                        if (e2 < e3) {
+                            t = c2;
+                            c2 = c3;
+                            c3 = t;
+                            u = e2;
+                            e2 = e3;
+                            e3 = u;
+                        }
+                        if (e0 < e2) {
+                            t = c0;
+                            c0 = c2;
+                            c2 = t;
+                            u = e0;
+                            e0 = e2;
+                            e2 = u;
+                        }
+                        if (e1 < e3) {
+                            t = c1;
+                            c1 = c3;
+                            c3 = t;
+                            u = e1;
+                            e1 = e3;
+                            e3 = u;
+                        }
+                        if (e1 < e2) {
+                            t = c1;
+                            c1 = c2;
+                            c2 = t;
+                            u = e1;
+                            e1 = e2;
+                            e2 = u;
+                        }
+                        push(stack, stackEntry, sp++, nodes, o, c0, e0);
+                        push(stack, stackEntry, sp++, nodes, o, c1, e1);
+                        push(stack, stackEntry, sp++, nodes, o, c2, e2);
+                        link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c3]);
+                        count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c3]);
                         continue;
                     }
                 }
@@ -276,25 +372,11 @@ public final class Accelerator implements Intersectable {
     /** The shared-edge entry of {@link #info} for a primitive that is not a triangle. */
     private static final int OBJECT = -1;
 
-    /**
-     * Sorts stack entries {@code [from, to)} by entry distance, farthest first, so the nearest is popped first
-     * (insertion sort: at most {@link BVH#WIDTH} entries).
-     */
-    private static void sortNearestOnTop(int[] stack, double[] stackEntry, int from, int to) {
-        for (int i = from + 1; i < to; i++) {
-            double e = stackEntry[i];
-            int link = stack[2 * i], count = stack[2 * i + 1];
-            int j = i - 1;
-            while (j >= from && stackEntry[j] < e) {
-                stackEntry[j + 1] = stackEntry[j];
-                stack[2 * j + 2] = stack[2 * j];
-                stack[2 * j + 3] = stack[2 * j + 1];
-                j--;
-            }
-            stackEntry[j + 1] = e;
-            stack[2 * j + 2] = link;
-            stack[2 * j + 3] = count;
-        }
+    /** Writes child {@code c} of the node at {@code o}, entered at {@code entry}, to stack slot {@code sp}. */
+    private static void push(int[] stack, double[] stackEntry, int sp, float[] nodes, int o, int c, double entry) {
+        stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+        stack[2 * sp + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+        stackEntry[sp] = entry;
     }
 
     // ---------------------------------------------------------------- shadows

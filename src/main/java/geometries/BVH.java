@@ -75,15 +75,12 @@ public final class BVH {
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
         this.order = b.index;
-        Collapser c = new Collapser(b);
         boolean rootIsLeaf = b.data[1] > 0;
+        Collapser c = new Collapser(b, rootIsLeaf ? 0 : Collapser.countWideNodes(b, 0));
         if (!rootIsLeaf) c.collapse(0);
-        nodes = Arrays.copyOf(c.nodes, NODE_STRIDE * c.count);
+        nodes = c.nodes;
         wideNodeCount = c.count;
-        for (int a = 0; a < 3; a++) {
-            rootBounds[a] = floatBelow(b.bounds[a]);
-            rootBounds[3 + a] = floatAbove(b.bounds[3 + a]);
-        }
+        System.arraycopy(b.bounds, 0, rootBounds, 0, 6);
         rootLink = rootIsLeaf ? b.data[0] : 0;
         rootCount = rootIsLeaf ? b.data[1] : 0;
     }
@@ -94,16 +91,32 @@ public final class BVH {
         float[] nodes;
         int count;
 
-        Collapser(Builder b) {
+        /** {@code wideNodes}: from {@link #countWideNodes}, so the array is allocated once at its final size. */
+        Collapser(Builder b, int wideNodes) {
             this.b = b;
-            // A binary tree of L leaves has L - 1 interior nodes; every 4-wide node absorbs at least one.
-            nodes = new float[NODE_STRIDE * Math.max(1, b.nodeCount - b.leafCount)];
+            nodes = new float[NODE_STRIDE * wideNodes];
         }
 
-        /** Writes the 4-wide node that replaces binary interior node {@code binary}; returns its index. */
-        int collapse(int binary) {
-            int self = count++;
+        /**
+         * How many 4-wide nodes {@link #collapse} writes for binary interior node {@code binary}: the same choices
+         * without the writes (a few milliseconds for a million primitives, against allocating and copying an array
+         * sized for the worst case).
+         */
+        static int countWideNodes(Builder b, int binary) {
             int[] children = new int[WIDTH];
+            int n = open(b, binary, children);
+            int total = 1;
+            for (int c = 0; c < n; c++) {
+                if (!isLeaf(b, children[c])) total += countWideNodes(b, children[c]);
+            }
+            return total;
+        }
+
+        /**
+         * Fills {@code children} with the binary nodes that become the 4-wide children of binary interior node
+         * {@code binary}, in order; returns how many.
+         */
+        static int open(Builder b, int binary, int[] children) {
             int n = 0;
             children[n++] = binary + 1;
             children[n++] = b.data[2 * binary];
@@ -112,8 +125,8 @@ public final class BVH {
                 int widest = -1;
                 double widestArea = -1;
                 for (int i = 0; i < n; i++) {
-                    if (isLeaf(children[i])) continue;
-                    double area = area(children[i]);
+                    if (isLeaf(b, children[i])) continue;
+                    double area = area(b, children[i]);
                     if (area > widestArea) {
                         widestArea = area;
                         widest = i;
@@ -126,6 +139,14 @@ public final class BVH {
                 children[widest + 1] = b.data[2 * opened];
                 n++;
             }
+            return n;
+        }
+
+        /** Writes the 4-wide node that replaces binary interior node {@code binary}; returns its index. */
+        int collapse(int binary) {
+            int self = count++;
+            int[] children = new int[WIDTH];
+            int n = open(b, binary, children);
             int o = NODE_STRIDE * self;
             for (int c = 0; c < WIDTH; c++) {
                 if (c >= n) {
@@ -138,10 +159,10 @@ public final class BVH {
                 }
                 int child = children[c];
                 for (int a = 0; a < 3; a++) {
-                    nodes[o + MIN_X + WIDTH * a + c] = floatBelow(b.bounds[6 * child + a]);
-                    nodes[o + MAX_X + WIDTH * a + c] = floatAbove(b.bounds[6 * child + 3 + a]);
+                    nodes[o + MIN_X + WIDTH * a + c] = b.bounds[6 * child + a];
+                    nodes[o + MAX_X + WIDTH * a + c] = b.bounds[6 * child + 3 + a];
                 }
-                boolean leaf = isLeaf(child);
+                boolean leaf = isLeaf(b, child);
                 int link = leaf ? b.data[2 * child] : collapse(child);
                 nodes[o + LINK + c] = Float.intBitsToFloat(link);
                 nodes[o + COUNT + c] = Float.intBitsToFloat(leaf ? b.data[2 * child + 1] : 0);
@@ -149,11 +170,11 @@ public final class BVH {
             return self;
         }
 
-        private boolean isLeaf(int binary) {
+        private static boolean isLeaf(Builder b, int binary) {
             return b.data[2 * binary + 1] > 0;
         }
 
-        private double area(int binary) {
+        private static double area(Builder b, int binary) {
             int o = 6 * binary;
             return Builder.surfaceArea(
                     b.bounds[o], b.bounds[o + 1], b.bounds[o + 2], b.bounds[o + 3], b.bounds[o + 4], b.bounds[o + 5]);
@@ -297,7 +318,6 @@ public final class BVH {
     /** The recursive binned-SAH build, writing nodes depth-first into growable arrays. */
     private static final class Builder {
         private final double[] primBounds;
-        private final double[] centroids;
         private final int[] index;
         private final int bins;
         private final int maxLeafSize;
@@ -305,7 +325,12 @@ public final class BVH {
         private final double[] binBounds;
         private final double[] rightArea;
 
-        double[] bounds;
+        /**
+         * Six floats per node, its box rounded outward ({@link #floatBelow}, {@link #floatAbove}): all the collapse
+         * and the traversal need, at half the memory of doubles.
+         */
+        float[] bounds;
+
         int[] data;
         int nodeCount;
         int leafCount;
@@ -316,29 +341,29 @@ public final class BVH {
             this.bins = bins;
             this.maxLeafSize = maxLeafSize;
             int n = primBounds.length / 6;
-            centroids = new double[3 * n];
             index = new int[n];
-            for (int i = 0; i < n; i++) {
-                index[i] = i;
-                for (int a = 0; a < 3; a++) {
-                    centroids[3 * i + a] = 0.5 * (primBounds[6 * i + a] + primBounds[6 * i + 3 + a]);
-                }
-            }
+            for (int i = 0; i < n; i++) index[i] = i;
             binCount = new int[bins];
             binBounds = new double[6 * bins];
             rightArea = new double[bins];
-            int capacity = Math.max(1, 2 * n / Math.max(1, maxLeafSize) + 1);
-            bounds = new double[6 * capacity];
+            // A binary tree over n primitives has at most 2n - 1 nodes (leaves hold at least one), so the arrays are
+            // allocated once: growing them by doubling allocated and copied twice the memory on large meshes.
+            int capacity = Math.max(1, 2 * n - 1);
+            bounds = new float[6 * capacity];
             data = new int[2 * capacity];
             if (n > 0) build(0, n, 0);
         }
 
         private int allocateNode() {
-            if (nodeCount == data.length / 2) {
-                bounds = Arrays.copyOf(bounds, bounds.length * 2);
-                data = Arrays.copyOf(data, data.length * 2);
-            }
             return nodeCount++;
+        }
+
+        /**
+         * Centroid of primitive {@code p} on {@code axis}, computed where needed rather than stored: the box it
+         * comes from is read anyway, and a stored copy cost another cache miss per primitive and pass.
+         */
+        private double centroid(int p, int axis) {
+            return 0.5 * (primBounds[6 * p + axis] + primBounds[6 * p + 3 + axis]);
         }
 
         private void build(int start, int end, int depth) {
@@ -358,7 +383,9 @@ public final class BVH {
                 bx1 = Math.max(bx1, primBounds[o + 3]);
                 by1 = Math.max(by1, primBounds[o + 4]);
                 bz1 = Math.max(bz1, primBounds[o + 5]);
-                double x = centroids[3 * p], y = centroids[3 * p + 1], z = centroids[3 * p + 2];
+                double x = 0.5 * (primBounds[o] + primBounds[o + 3]);
+                double y = 0.5 * (primBounds[o + 1] + primBounds[o + 4]);
+                double z = 0.5 * (primBounds[o + 2] + primBounds[o + 5]);
                 cx0 = Math.min(cx0, x);
                 cy0 = Math.min(cy0, y);
                 cz0 = Math.min(cz0, z);
@@ -367,12 +394,12 @@ public final class BVH {
                 cz1 = Math.max(cz1, z);
             }
             int b = 6 * node;
-            bounds[b] = bx0;
-            bounds[b + 1] = by0;
-            bounds[b + 2] = bz0;
-            bounds[b + 3] = bx1;
-            bounds[b + 4] = by1;
-            bounds[b + 5] = bz1;
+            bounds[b] = floatBelow(bx0);
+            bounds[b + 1] = floatBelow(by0);
+            bounds[b + 2] = floatBelow(bz0);
+            bounds[b + 3] = floatAbove(bx1);
+            bounds[b + 4] = floatAbove(by1);
+            bounds[b + 5] = floatAbove(bz1);
             maxDepthReached = Math.max(maxDepthReached, depth);
 
             if (count == 1 || depth >= MAX_DEPTH) {
@@ -417,7 +444,7 @@ public final class BVH {
             double scale = bins / extent;
             for (int k = start; k < end; k++) {
                 int p = index[k];
-                int bin = binOf(centroids[3 * p + axis], lo, scale);
+                int bin = binOf(centroid(p, axis), lo, scale);
                 binCount[bin]++;
                 int o = 6 * bin, q = 6 * p;
                 binBounds[o] = Math.min(binBounds[o], primBounds[q]);
@@ -471,7 +498,7 @@ public final class BVH {
             // Partition in place: bins [0, bestSplit] to the left.
             int i = start, j = end - 1;
             while (i <= j) {
-                if (binOf(centroids[3 * index[i] + axis], lo, scale) <= bestSplit) {
+                if (binOf(centroid(index[i], axis), lo, scale) <= bestSplit) {
                     i++;
                 } else {
                     int s = index[i];
