@@ -49,7 +49,7 @@ public final class StreetExperiment implements Experiment {
 
     @Override
     public List<Variant> variants() {
-        return List.of(Variant.GRID, Variant.RANDOM, Variant.HALTON, new Variant(SamplingPattern.GRID, true));
+        return List.of(Variant.GRID, Variant.RANDOM, Variant.HALTON, ADAPTIVE_GRID, ADAPTIVE_HALTON);
     }
 
     /** Perfect squares up to 81, so that GRID fires exactly {@code n} rays and the baseline is measured itself. */
