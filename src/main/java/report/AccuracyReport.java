@@ -262,16 +262,22 @@ public final class AccuracyReport {
                     m.stream().mapToDouble(Measurement::rmse).toArray());
             s.append(String.format(
                     Locale.ROOT,
-                    "| %s | %.2f | %.2f | %.1fx |%n",
+                    "| %s | %.2f | %.2f | %s |%n",
                     e.getKey(),
                     bySamples.slope(),
                     byTime.slope(),
-                    byTime.factorToHalveError()));
+                    halvingFactor(byTime.factorToHalveError())));
         }
         s.append(lowDiscrepancyVersusRandom(byVariant));
         String verdict = experiment.verdict(byVariant);
         if (!verdict.isEmpty()) s.append('\n').append(verdict);
         return s.toString();
+    }
+
+    /** The time factor that halves the error, or why there is none (an error that does not fall). */
+    static String halvingFactor(double factor) {
+        if (!Double.isFinite(factor) || factor <= 0) return "never: the error does not fall";
+        return String.format(Locale.ROOT, "%.1fx", factor);
     }
 
     /** At how many of the measured counts above one the HALTON pattern had a lower RMSE than RANDOM. */

@@ -18,7 +18,7 @@ final class Charts {
 
     /** Error against samples and against seconds, one series per variant, side by side in one picture. */
     static BufferedImage convergence(String title, String sampleUnit, Map<String, List<Measurement>> byVariant) {
-        XYChart samples = chart(title + ": RMSE vs " + sampleUnit, sampleUnit, "RMSE (of 255)");
+        XYChart samples = chart(title + ": RMSE vs samples", sampleUnit, "RMSE (of 255)");
         XYChart time = chart(title + ": RMSE vs render time", "seconds", "RMSE (of 255)");
         for (Map.Entry<String, List<Measurement>> e : byVariant.entrySet()) {
             List<Measurement> m = e.getValue();
