@@ -153,12 +153,13 @@ public class SimpleRayTracer extends RayTracerBase {
         double[] offsets = ctx.shadowOffsets(count);
         if (settings.adaptiveShadows()) {
             // Probe the centre and a ring on the rim first: an occluder edge that crosses the disk almost surely
-            // separates two of them, so agreement means the point is fully lit or in the umbra.
+            // separates two of them, so agreement means the point is fully lit, in the umbra, or behind the same
+            // glass from every part of the disk.
             int probes = Math.max(5, (int) Math.round(Math.sqrt(count)));
             if (probes < count) {
                 SuperSamplingBlackboard.getProbeOffsets(probes, ctx.random.reset(seed), offsets);
                 Double3 probe = diskVisibility(sp, position, e1, e2, diameter, probes, offsets, ctx);
-                if (probe.isZero() || probe.equals(Double3.ONE)) {
+                if (ctx.diskUniform) {
                     ctx.counters.samplesSaved += count - probes;
                     return probe;
                 }
@@ -171,8 +172,10 @@ public class SimpleRayTracer extends RayTracerBase {
     }
 
     /**
-     * Mean transmittance of the shadow rays toward {@code count} points of the disk given by {@code offsets};
-     * exactly 1 when all are clear and exactly 0 when all are blocked.
+     * Mean transmittance of the shadow rays toward {@code count} points of the disk given by {@code offsets}. When
+     * every ray has the same transmittance (all clear, all blocked, or all through the same glass) it is returned
+     * exactly, not as a sum divided by the count, so a soft light that nothing partly hides shades exactly as the
+     * hard light; {@link TraceContext#diskUniform} tells whether that was the case.
      */
     private Double3 diskVisibility(
             SurfacePoint sp,
@@ -184,21 +187,22 @@ public class SimpleRayTracer extends RayTracerBase {
             double[] offsets,
             TraceContext ctx) {
         double r = 0, g = 0, b = 0;
-        int clear = 0, blocked = 0;
+        Double3 first = null;
+        boolean uniform = true;
         for (int i = 0; i < count; i++) {
             double a = offsets[2 * i] * diameter, bb = offsets[2 * i + 1] * diameter;
             double qx = c.x + a * e1.x + bb * e2.x;
             double qy = c.y + a * e1.y + bb * e2.y;
             double qz = c.z + a * e1.z + bb * e2.z;
             Double3 t = shadowTo(sp, qx, qy, qz, ctx);
-            if (t.isZero()) blocked++;
-            else if (t.equals(Double3.ONE)) clear++;
+            if (first == null) first = t;
+            else if (uniform && !t.equals(first)) uniform = false;
             r += t.d1;
             g += t.d2;
             b += t.d3;
         }
-        if (clear == count) return Double3.ONE;
-        if (blocked == count) return Double3.ZERO;
+        ctx.diskUniform = uniform;
+        if (uniform) return first;
         return new Double3(r / count, g / count, b / count);
     }
 

@@ -16,6 +16,8 @@ public final class TraceContext {
     public final SampleStream random = new SampleStream();
     /** Counts of the rays this thread fired. */
     public final RayCounters counters = new RayCounters();
+    /** Whether the last disk of shadow rays all had the same transmittance (set by the soft-shadow sampler). */
+    boolean diskUniform;
 
     /** Sample buffers, one per kind of beam: beams of different kinds nest, beams of one kind never do. */
     private double[] pixelOffsets = new double[2 * 81];

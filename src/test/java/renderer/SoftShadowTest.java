@@ -88,6 +88,26 @@ class SoftShadowTest {
     }
 
     @Test
+    void behindTheSameGlassFromEveryPartOfTheDiskTheSoftLightShadesExactlyAsTheHardOne() {
+        // kT 0.6: 81 rays of transmittance 0.6 summed and divided by 81 is not 0.6 in floating point; the sampler
+        // must return the common value itself, fixed or adaptive, or soft shadows would change pixels (by one
+        // display level, here and there) where no penumbra is.
+        Material glass = new Material().setKd(0.2).setKt(0.6);
+        ImageWriter hard = render(FeatureScenes.shadowLight(), glass, "glass-hard");
+        ImageWriter soft = render(FeatureScenes.shadowLight().setRadius(2).setNumSamples(81), glass, "glass-soft");
+        Scene scene = FeatureScenes.shadowScene(
+                FeatureScenes.shadowLight().setRadius(2).setNumSamples(81), glass);
+        Camera adaptive = FeatureScenes.shadowCamera(scene, N)
+                .setRenderSettings(RenderSettings.DEFAULT.withShadowSampling(SamplingPattern.JITTERED, true))
+                .build()
+                .renderImage();
+        int c = N / 2;
+        assertEquals(hard.getPixel(c, c), soft.getPixel(c, c), "fixed count, centre of the glass's shadow");
+        assertEquals(hard.getPixel(c, c), adaptive.getImage().getPixel(c, c), "adaptive");
+        assertTrue(brightness(hard, c, c) < brightness(hard, N - 2, 2), "the centre is in the glass's shadow");
+    }
+
+    @Test
     void radiusZeroOrOneSampleIsExactlyTheHardShadow() {
         ImageWriter hard = render(FeatureScenes.shadowLight(), OPAQUE, "plain");
         assertNull(FeatureScenes.firstDifference(
