@@ -12,13 +12,13 @@ import sceneio.SceneExporter;
  * Writes the street scene as a scene file, {@code scenes/street.json} with its meshes in {@code scenes/models/}:
  * the README's main job renders it, and users can change it without writing Java. The file holds the "good"
  * settings of docs/ACCURACY.md at half the README picture's size: 800 x 500, 16 HALTON camera rays per pixel, lamps
- * of radius 10 with adaptive soft shadows of at most 4 rays per lamp and camera ray.
+ * of radius 10 with adaptive soft shadows of at most 9 rays per lamp and camera ray (5 probes, 4 more in penumbrae).
  *
  * <p>Run after changing {@link StreetScene}: {@code mvn -q compile exec:java -Dexec.mainClass=app.StreetSceneFile}.
  * {@code StreetSceneFileTest} checks that the file still renders exactly what the Java scene renders.
  */
 public final class StreetSceneFile {
-    public static final int WIDTH = 800, HEIGHT = 500, CAMERA_RAYS = 16, SHADOW_RAYS = 4;
+    public static final int WIDTH = 800, HEIGHT = 500, CAMERA_RAYS = 16, SHADOW_RAYS = 9;
     public static final double LAMP_RADIUS = 10;
 
     private StreetSceneFile() {}
