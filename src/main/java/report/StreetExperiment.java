@@ -55,7 +55,7 @@ public final class StreetExperiment implements Experiment {
         return List.of(Variant.GRID, Variant.RANDOM, Variant.HALTON, ADAPTIVE_GRID, ADAPTIVE_HALTON);
     }
 
-    /** Perfect squares up to 81, so that GRID fires exactly {@code n} rays and the baseline is measured itself. */
+    /** Perfect squares up to 81, so that every GRID count is a full square grid and the baseline is measured itself. */
     @Override
     public int[] counts(int[] requested) {
         return new int[] {1, 4, 16, 36, BASELINE_SAMPLES};

@@ -23,7 +23,7 @@ class StreetExperimentTest {
         int[] counts = new StreetExperiment().counts(new int[] {1, 4, 16, 64, 256});
         for (int n : counts) {
             int root = (int) Math.round(Math.sqrt(n));
-            assertEquals(n, root * root, "GRID fires exactly n rays only for squares: " + n);
+            assertEquals(n, root * root, "a full square GRID: " + n);
         }
         assertEquals(StreetExperiment.BASELINE_SAMPLES, counts[counts.length - 1]);
     }
