@@ -39,7 +39,9 @@ public final class PlanningBenchmark {
         scenes.put("matte only (5 spheres, floor, 3 lights), 800x600", () -> matteCamera(800, 600));
         scenes.put(
                 "showcase (mirror, glass, 2 soft lights), 400x250", () -> Showcase.camera(Showcase.scene(), 400, 250));
-        scenes.putAll(extraScenes());
+        StreetScene hard = new StreetScene(StreetOptions.HARD), soft = new StreetScene(StreetOptions.soft(10, 16));
+        scenes.put("street, hard lamps (6,733 primitives, 12 lights), 800x500", () -> hard.camera(800, 500));
+        scenes.put("street, soft lamps (16 rays), 400x250", () -> soft.camera(400, 250));
         System.out.printf(
                 Locale.ROOT,
                 "%d thread(s), median of %d runs%n%n",
@@ -62,15 +64,6 @@ public final class PlanningBenchmark {
                     off.rays.shadow - on.rays.shadow,
                     off.rays.reflection + off.rays.refraction - on.rays.reflection - on.rays.refraction);
         }
-    }
-
-    /** The street scene: hard lamps at the README main job's size, and soft lamps (16 rays each) smaller. */
-    static Map<String, Supplier<Camera.Builder>> extraScenes() {
-        Map<String, Supplier<Camera.Builder>> street = new LinkedHashMap<>();
-        StreetScene hard = new StreetScene(StreetOptions.HARD), soft = new StreetScene(StreetOptions.soft(10, 16));
-        street.put("street, hard lamps (6,733 primitives, 12 lights), 800x500", () -> hard.camera(800, 500));
-        street.put("street, soft lamps (16 rays), 400x250", () -> soft.camera(400, 250));
-        return street;
     }
 
     private record Result(double seconds, RayCounters rays) {}

@@ -3,6 +3,7 @@ package distributed;
 import cli.ExitCodes;
 import cli.RenderOverrides;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -14,6 +15,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import renderer.AtomicFile;
 import sceneio.CameraPath;
 import sceneio.CameraPathLoader;
 
@@ -90,7 +92,7 @@ public final class FramesCommand implements Callable<Integer> {
                     bundle,
                     path,
                     (frame, png) -> {
-                        AtomicFiles.write(files.file(frame), png);
+                        AtomicFile.write(files.file(frame), "frame", temp -> Files.write(temp, png));
                         written.incrementAndGet();
                     },
                     FaultInjection.from(spark.getConf()));
