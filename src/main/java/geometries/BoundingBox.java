@@ -107,9 +107,9 @@ public final class BoundingBox {
     /** The robust slab test on raw bounds, shared with the flat BVH. */
     static boolean slabTest(
             double x0, double y0, double z0, double x1, double y1, double z1, Ray ray, double tMin, double tMax) {
-        double near = (x0 - ray.ox) * ray.invDx;
-        double far = (x1 - ray.ox) * ray.invDx;
-        if (ray.invDx < 0) {
+        double near = (x0 - ray.ox()) * ray.invDx();
+        double far = (x1 - ray.ox()) * ray.invDx();
+        if (ray.invDx() < 0) {
             double s = near;
             near = far;
             far = s;
@@ -120,9 +120,9 @@ public final class BoundingBox {
         if (far < tMax) tMax = far;
         if (tMin > tMax) return false;
 
-        near = (y0 - ray.oy) * ray.invDy;
-        far = (y1 - ray.oy) * ray.invDy;
-        if (ray.invDy < 0) {
+        near = (y0 - ray.oy()) * ray.invDy();
+        far = (y1 - ray.oy()) * ray.invDy();
+        if (ray.invDy() < 0) {
             double s = near;
             near = far;
             far = s;
@@ -132,9 +132,9 @@ public final class BoundingBox {
         if (far < tMax) tMax = far;
         if (tMin > tMax) return false;
 
-        near = (z0 - ray.oz) * ray.invDz;
-        far = (z1 - ray.oz) * ray.invDz;
-        if (ray.invDz < 0) {
+        near = (z0 - ray.oz()) * ray.invDz();
+        far = (z1 - ray.oz()) * ray.invDz();
+        if (ray.invDz() < 0) {
             double s = near;
             near = far;
             far = s;
@@ -152,10 +152,10 @@ public final class BoundingBox {
      * {@link #FINITE_RECIPROCALS} when no direction component is zero or subnormal.
      */
     static int directionSigns(Ray ray) {
-        boolean finite = Double.isFinite(ray.invDx) && Double.isFinite(ray.invDy) && Double.isFinite(ray.invDz);
-        return (ray.invDx < 0 ? 1 : 0)
-                | (ray.invDy < 0 ? 2 : 0)
-                | (ray.invDz < 0 ? 4 : 0)
+        boolean finite = Double.isFinite(ray.invDx()) && Double.isFinite(ray.invDy()) && Double.isFinite(ray.invDz());
+        return (ray.invDx() < 0 ? 1 : 0)
+                | (ray.invDy() < 0 ? 2 : 0)
+                | (ray.invDz() < 0 ? 4 : 0)
                 | (finite ? FINITE_RECIPROCALS : 0);
     }
 
@@ -174,11 +174,13 @@ public final class BoundingBox {
         if ((signs & FINITE_RECIPROCALS) == 0) return entryWithInfiniteReciprocals(boxes, o, ray, signs, tMin, tMax);
         int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
         double near = Math.max(
-                Math.max((boxes[o + nearX] - ray.ox) * ray.invDx, (boxes[o + nearY] - ray.oy) * ray.invDy),
-                (boxes[o + nearZ] - ray.oz) * ray.invDz);
+                Math.max((boxes[o + nearX] - ray.ox()) * ray.invDx(), (boxes[o + nearY] - ray.oy()) * ray.invDy()),
+                (boxes[o + nearZ] - ray.oz()) * ray.invDz());
         double far = Math.min(
-                Math.min((boxes[o + 3 - nearX] - ray.ox) * ray.invDx, (boxes[o + 5 - nearY] - ray.oy) * ray.invDy),
-                (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz);
+                Math.min(
+                        (boxes[o + 3 - nearX] - ray.ox()) * ray.invDx(),
+                        (boxes[o + 5 - nearY] - ray.oy()) * ray.invDy()),
+                (boxes[o + 7 - nearZ] - ray.oz()) * ray.invDz());
         near -= Math.abs(near) * SLAB_SLACK;
         far += Math.abs(far) * SLAB_SLACK;
         return (near <= far) & (near <= tMax) & (far >= tMin) ? near : MISS;
@@ -188,12 +190,12 @@ public final class BoundingBox {
     private static double entryWithInfiniteReciprocals(
             float[] boxes, int o, Ray ray, int signs, double tMin, double tMax) {
         int nearX = (signs & 1) * 3, nearY = (signs >> 1 & 1) * 3 + 1, nearZ = (signs >> 2 & 1) * 3 + 2;
-        double nx = (boxes[o + nearX] - ray.ox) * ray.invDx;
-        double fx = (boxes[o + 3 - nearX] - ray.ox) * ray.invDx;
-        double ny = (boxes[o + nearY] - ray.oy) * ray.invDy;
-        double fy = (boxes[o + 5 - nearY] - ray.oy) * ray.invDy;
-        double nz = (boxes[o + nearZ] - ray.oz) * ray.invDz;
-        double fz = (boxes[o + 7 - nearZ] - ray.oz) * ray.invDz;
+        double nx = (boxes[o + nearX] - ray.ox()) * ray.invDx();
+        double fx = (boxes[o + 3 - nearX] - ray.ox()) * ray.invDx();
+        double ny = (boxes[o + nearY] - ray.oy()) * ray.invDy();
+        double fy = (boxes[o + 5 - nearY] - ray.oy()) * ray.invDy();
+        double nz = (boxes[o + nearZ] - ray.oz()) * ray.invDz();
+        double fz = (boxes[o + 7 - nearZ] - ray.oz()) * ray.invDz();
         // "nx > near" is false for NaN, so a NaN slab leaves the interval unchanged.
         double near = tMin, far = tMax;
         if (nx > near) near = nx;

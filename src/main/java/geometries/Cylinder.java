@@ -43,9 +43,11 @@ public class Cylinder extends Tube {
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
         boolean found = intersectSide(ray, tMin, tMax, hit, 0, height);
         if (found) tMax = hit.t;
-        double dv = ray.dx * axis.dx + ray.dy * axis.dy + ray.dz * axis.dz;
+        double dv = ray.dx() * axis.dx() + ray.dy() * axis.dy() + ray.dz() * axis.dz();
         if (dv == 0) return found; // parallel to the caps
-        double fv = (ray.ox - axis.ox) * axis.dx + (ray.oy - axis.oy) * axis.dy + (ray.oz - axis.oz) * axis.dz;
+        double fv = (ray.ox() - axis.ox()) * axis.dx()
+                + (ray.oy() - axis.oy()) * axis.dy()
+                + (ray.oz() - axis.oz()) * axis.dz();
         if (intersectCap(ray, tMin, tMax, hit, (0 - fv) / dv, BOTTOM)) {
             found = true;
             tMax = hit.t;
@@ -56,9 +58,11 @@ public class Cylinder extends Tube {
     private boolean intersectCap(Ray ray, double tMin, double tMax, HitRecord hit, double t, int part) {
         if (!(t > tMin && t < tMax)) return false;
         Point c = part == BOTTOM ? axis.getHead() : top;
-        double wx = ray.ox + t * ray.dx - c.x, wy = ray.oy + t * ray.dy - c.y, wz = ray.oz + t * ray.dz - c.z;
-        double h = wx * axis.dx + wy * axis.dy + wz * axis.dz;
-        double rx = wx - h * axis.dx, ry = wy - h * axis.dy, rz = wz - h * axis.dz;
+        double wx = ray.ox() + t * ray.dx() - c.x,
+                wy = ray.oy() + t * ray.dy() - c.y,
+                wz = ray.oz() + t * ray.dz() - c.z;
+        double h = wx * axis.dx() + wy * axis.dy() + wz * axis.dz();
+        double rx = wx - h * axis.dx(), ry = wy - h * axis.dy(), rz = wz - h * axis.dz();
         if (rx * rx + ry * ry + rz * rz > radiusSquared) return false;
         hit.t = t;
         hit.geometry = this;
@@ -70,9 +74,9 @@ public class Cylinder extends Tube {
     @Override
     public BoundingBox getBoundingBox() {
         Point p0 = axis.getHead();
-        double ex = radius * Math.sqrt(Math.max(0, 1 - axis.dx * axis.dx));
-        double ey = radius * Math.sqrt(Math.max(0, 1 - axis.dy * axis.dy));
-        double ez = radius * Math.sqrt(Math.max(0, 1 - axis.dz * axis.dz));
+        double ex = radius * Math.sqrt(Math.max(0, 1 - axis.dx() * axis.dx()));
+        double ey = radius * Math.sqrt(Math.max(0, 1 - axis.dy() * axis.dy()));
+        double ez = radius * Math.sqrt(Math.max(0, 1 - axis.dz() * axis.dz()));
         BoundingBox box = BoundingBox.of(p0, top);
         double pad = 1 + 1e-12;
         return new BoundingBox(

@@ -56,10 +56,10 @@ public class Plane extends Geometry {
 
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
-        double denominator = normal.x * ray.dx + normal.y * ray.dy + normal.z * ray.dz;
+        double denominator = normal.x * ray.dx() + normal.y * ray.dy() + normal.z * ray.dz();
         if (denominator == 0) return false;
         double numerator =
-                normal.x * (point.x - ray.ox) + normal.y * (point.y - ray.oy) + normal.z * (point.z - ray.oz);
+                normal.x * (point.x - ray.ox()) + normal.y * (point.y - ray.oy()) + normal.z * (point.z - ray.oz());
         double t = numerator / denominator;
         if (!(t > tMin && t < tMax)) return false;
         hit.t = t;
@@ -87,7 +87,7 @@ public class Plane extends Geometry {
      */
     static void completePlanarHit(Ray ray, HitRecord hit, Point q, Vector n) {
         double t = hit.t;
-        double px = ray.ox + t * ray.dx, py = ray.oy + t * ray.dy, pz = ray.oz + t * ray.dz;
+        double px = ray.ox() + t * ray.dx(), py = ray.oy() + t * ray.dy(), pz = ray.oz() + t * ray.dz();
         double s = n.x * (px - q.x) + n.y * (py - q.y) + n.z * (pz - q.z);
         px -= s * n.x;
         py -= s * n.y;

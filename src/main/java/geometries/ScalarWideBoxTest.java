@@ -14,7 +14,7 @@ final class ScalarWideBoxTest extends WideBoxTest {
         int flipX = (signs & 1) * BVH.MAX_X, flipY = (signs >> 1 & 1) * BVH.MAX_X, flipZ = (signs >> 2 & 1) * BVH.MAX_X;
         int nearX = o + BVH.MIN_X + flipX, nearY = o + BVH.MIN_Y + flipY, nearZ = o + BVH.MIN_Z + flipZ;
         int farX = o + BVH.MAX_X - flipX, farY = o + BVH.MAX_Y - flipY, farZ = o + BVH.MAX_Z - flipZ;
-        double ox = ray.ox, oy = ray.oy, oz = ray.oz, ix = ray.invDx, iy = ray.invDy, iz = ray.invDz;
+        double ox = ray.ox(), oy = ray.oy(), oz = ray.oz(), ix = ray.invDx(), iy = ray.invDy(), iz = ray.invDz();
         int mask = 0;
         for (int c = 0; c < BVH.WIDTH; c++) {
             double near = Math.max(

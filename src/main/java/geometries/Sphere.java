@@ -51,9 +51,9 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
-        double fx = ray.ox - center.x, fy = ray.oy - center.y, fz = ray.oz - center.z;
-        double b = -(fx * ray.dx + fy * ray.dy + fz * ray.dz);
-        double lx = fx + b * ray.dx, ly = fy + b * ray.dy, lz = fz + b * ray.dz;
+        double fx = ray.ox() - center.x, fy = ray.oy() - center.y, fz = ray.oz() - center.z;
+        double b = -(fx * ray.dx() + fy * ray.dy() + fz * ray.dz());
+        double lx = fx + b * ray.dx(), ly = fy + b * ray.dy(), lz = fz + b * ray.dz();
         double discriminant = radiusSquared - (lx * lx + ly * ly + lz * lz);
         if (!(discriminant > 0)) return false;
         double q = b + Math.copySign(Math.sqrt(discriminant), b);
@@ -86,9 +86,9 @@ public class Sphere extends Geometry {
     @Override
     public void completeHit(Ray ray, HitRecord hit) {
         double t = hit.t;
-        double lx = ray.ox + t * ray.dx - center.x;
-        double ly = ray.oy + t * ray.dy - center.y;
-        double lz = ray.oz + t * ray.dz - center.z;
+        double lx = ray.ox() + t * ray.dx() - center.x;
+        double ly = ray.oy() + t * ray.dy() - center.y;
+        double lz = ray.oz() + t * ray.dz() - center.z;
         double length = Math.sqrt(lx * lx + ly * ly + lz * lz);
         Vector normal;
         if (length > 0) {

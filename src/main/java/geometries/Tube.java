@@ -53,15 +53,15 @@ public class Tube extends Geometry {
      * roots are tried nearest first.
      */
     protected final boolean intersectSide(Ray ray, double tMin, double tMax, HitRecord hit, double hMin, double hMax) {
-        double vx = axis.dx, vy = axis.dy, vz = axis.dz;
-        double fx = ray.ox - axis.ox, fy = ray.oy - axis.oy, fz = ray.oz - axis.oz;
+        double vx = axis.dx(), vy = axis.dy(), vz = axis.dz();
+        double fx = ray.ox() - axis.ox(), fy = ray.oy() - axis.oy(), fz = ray.oz() - axis.oz();
         // F = f x v, D = d x v: the components perpendicular to the axis, rotated by 90 degrees.
         double Fx = differenceOfProducts(fy, vz, fz, vy);
         double Fy = differenceOfProducts(fz, vx, fx, vz);
         double Fz = differenceOfProducts(fx, vy, fy, vx);
-        double Dx = differenceOfProducts(ray.dy, vz, ray.dz, vy);
-        double Dy = differenceOfProducts(ray.dz, vx, ray.dx, vz);
-        double Dz = differenceOfProducts(ray.dx, vy, ray.dy, vx);
+        double Dx = differenceOfProducts(ray.dy(), vz, ray.dz(), vy);
+        double Dy = differenceOfProducts(ray.dz(), vx, ray.dx(), vz);
+        double Dz = differenceOfProducts(ray.dx(), vy, ray.dy(), vx);
         double a = Dx * Dx + Dy * Dy + Dz * Dz;
         if (a == 0) return false; // parallel to the axis
         double b = -(Fx * Dx + Fy * Dy + Fz * Dz);
@@ -80,7 +80,7 @@ public class Tube extends Geometry {
             t1 = s;
         }
         double fv = fx * vx + fy * vy + fz * vz;
-        double dv = ray.dx * vx + ray.dy * vy + ray.dz * vz;
+        double dv = ray.dx() * vx + ray.dy() * vy + ray.dz() * vz;
         if (t0 > tMin && t0 < tMax) {
             double h = fv + t0 * dv;
             if (h > hMin && h < hMax) return record(hit, t0);
@@ -113,27 +113,27 @@ public class Tube extends Geometry {
     /** Hit point re-projected radially onto the lateral surface, with its error bound and outward normal. */
     protected final void completeSideHit(Ray ray, HitRecord hit) {
         double t = hit.t;
-        double vx = axis.dx, vy = axis.dy, vz = axis.dz;
-        double wx = ray.ox + t * ray.dx - axis.ox;
-        double wy = ray.oy + t * ray.dy - axis.oy;
-        double wz = ray.oz + t * ray.dz - axis.oz;
+        double vx = axis.dx(), vy = axis.dy(), vz = axis.dz();
+        double wx = ray.ox() + t * ray.dx() - axis.ox();
+        double wy = ray.oy() + t * ray.dy() - axis.oy();
+        double wz = ray.oz() + t * ray.dz() - axis.oz();
         double h = wx * vx + wy * vy + wz * vz;
         double rx = wx - h * vx, ry = wy - h * vy, rz = wz - h * vz;
         double length = Math.sqrt(rx * rx + ry * ry + rz * rz);
         Vector normal = length > 0
                 ? new Vector(rx / length, ry / length, rz / length)
                 : axis.getDirection().perpendicular();
-        double px = axis.ox + h * vx + radius * normal.x;
-        double py = axis.oy + h * vy + radius * normal.y;
-        double pz = axis.oz + h * vz + radius * normal.z;
+        double px = axis.ox() + h * vx + radius * normal.x;
+        double py = axis.oy() + h * vy + radius * normal.y;
+        double pz = axis.oz() + h * vz + radius * normal.z;
         hit.point = new Point(px, py, pz);
         hit.normal = normal;
         hit.shadingNormal = normal;
         double g = gamma(4), gr = gamma(8) * radius;
         double ah = Math.abs(h);
         hit.setError(
-                g * (Math.abs(px) + Math.abs(axis.ox) + ah) + gr,
-                g * (Math.abs(py) + Math.abs(axis.oy) + ah) + gr,
-                g * (Math.abs(pz) + Math.abs(axis.oz) + ah) + gr);
+                g * (Math.abs(px) + Math.abs(axis.ox()) + ah) + gr,
+                g * (Math.abs(py) + Math.abs(axis.oy()) + ah) + gr,
+                g * (Math.abs(pz) + Math.abs(axis.oz()) + ah) + gr);
     }
 }

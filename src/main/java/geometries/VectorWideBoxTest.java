@@ -45,14 +45,14 @@ final class VectorWideBoxTest extends WideBoxTest {
         int flipX = (signs & 1) * BVH.MAX_X, flipY = (signs >> 1 & 1) * BVH.MAX_X, flipZ = (signs >> 2 & 1) * BVH.MAX_X;
         DoubleVector near = max(
                 max(
-                        slab(nodes, o + BVH.MIN_X + flipX, ray.ox, ray.invDx),
-                        slab(nodes, o + BVH.MIN_Y + flipY, ray.oy, ray.invDy)),
-                slab(nodes, o + BVH.MIN_Z + flipZ, ray.oz, ray.invDz));
+                        slab(nodes, o + BVH.MIN_X + flipX, ray.ox(), ray.invDx()),
+                        slab(nodes, o + BVH.MIN_Y + flipY, ray.oy(), ray.invDy())),
+                slab(nodes, o + BVH.MIN_Z + flipZ, ray.oz(), ray.invDz()));
         DoubleVector far = min(
                 min(
-                        slab(nodes, o + BVH.MAX_X - flipX, ray.ox, ray.invDx),
-                        slab(nodes, o + BVH.MAX_Y - flipY, ray.oy, ray.invDy)),
-                slab(nodes, o + BVH.MAX_Z - flipZ, ray.oz, ray.invDz));
+                        slab(nodes, o + BVH.MAX_X - flipX, ray.ox(), ray.invDx()),
+                        slab(nodes, o + BVH.MAX_Y - flipY, ray.oy(), ray.invDy())),
+                slab(nodes, o + BVH.MAX_Z - flipZ, ray.oz(), ray.invDz()));
         near = near.sub(near.abs().mul(BoundingBox.SLAB_SLACK));
         far = far.add(far.abs().mul(BoundingBox.SLAB_SLACK));
         VectorMask<Double> hit = near.compare(VectorOperators.LE, far)

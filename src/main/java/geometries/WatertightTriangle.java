@@ -50,7 +50,7 @@ public final class WatertightTriangle {
     public static boolean intersect(
             double[] v, int a, int b, int c, int sharedEdges, Ray ray, double tMin, double tMax, HitRecord hit) {
         // Translate to the ray origin and permute so that z is the ray's dominant axis.
-        int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+        int kx = ray.kx(), ky = ray.ky(), kz = ray.kz();
         double ox = coordinate(ray, kx), oy = coordinate(ray, ky), oz = coordinate(ray, kz);
         double p0x = v[a + kx] - ox;
         double p0y = v[a + ky] - oy;
@@ -63,7 +63,7 @@ public final class WatertightTriangle {
         double p2z = v[c + kz] - oz;
 
         // Shear so the ray runs along +z.
-        double sx = ray.shearX, sy = ray.shearY;
+        double sx = ray.shearX(), sy = ray.shearY();
         p0x += sx * p0z;
         p0y += sy * p0z;
         p1x += sx * p1z;
@@ -84,7 +84,7 @@ public final class WatertightTriangle {
         }
 
         // Distance, scaled by det, compared against the interval without dividing.
-        double sz = ray.shearZ;
+        double sz = ray.shearZ();
         p0z *= sz;
         p1z *= sz;
         p2z *= sz;
@@ -115,7 +115,7 @@ public final class WatertightTriangle {
     }
 
     private static double coordinate(Ray ray, int axis) {
-        return axis == 0 ? ray.ox : axis == 1 ? ray.oy : ray.oz;
+        return axis == 0 ? ray.ox() : axis == 1 ? ray.oy() : ray.oz();
     }
 
     /**

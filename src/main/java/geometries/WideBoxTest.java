@@ -65,12 +65,12 @@ abstract class WideBoxTest {
     private static double entryWithInfiniteReciprocals(
             float[] nodes, int o, Ray ray, int signs, double tMin, double tMax) {
         int sx = (signs & 1) * BVH.MAX_X, sy = (signs >> 1 & 1) * BVH.MAX_X, sz = (signs >> 2 & 1) * BVH.MAX_X;
-        double nx = (nodes[o + BVH.MIN_X + sx] - ray.ox) * ray.invDx;
-        double fx = (nodes[o + BVH.MAX_X - sx] - ray.ox) * ray.invDx;
-        double ny = (nodes[o + BVH.MIN_Y + sy] - ray.oy) * ray.invDy;
-        double fy = (nodes[o + BVH.MAX_Y - sy] - ray.oy) * ray.invDy;
-        double nz = (nodes[o + BVH.MIN_Z + sz] - ray.oz) * ray.invDz;
-        double fz = (nodes[o + BVH.MAX_Z - sz] - ray.oz) * ray.invDz;
+        double nx = (nodes[o + BVH.MIN_X + sx] - ray.ox()) * ray.invDx();
+        double fx = (nodes[o + BVH.MAX_X - sx] - ray.ox()) * ray.invDx();
+        double ny = (nodes[o + BVH.MIN_Y + sy] - ray.oy()) * ray.invDy();
+        double fy = (nodes[o + BVH.MAX_Y - sy] - ray.oy()) * ray.invDy();
+        double nz = (nodes[o + BVH.MIN_Z + sz] - ray.oz()) * ray.invDz();
+        double fz = (nodes[o + BVH.MAX_Z - sz] - ray.oz()) * ray.invDz();
         // "nx > near" is false for NaN, so a NaN slab leaves the interval unchanged.
         double near = tMin, far = tMax;
         if (nx > near) near = nx;

@@ -1,27 +1,27 @@
 package primitives;
 
 /**
- * An immutable half-line: an origin and a unit direction.
+ * A half-line: an origin and a unit direction.
  *
  * <p>Besides the user-facing {@link #getHead()} and {@link #getDirection()}, a ray carries the per-ray constants
  * that the intersection kernels need, computed once here instead of once per box or triangle: the raw
  * coordinates, the reciprocal direction for the slab test, and the axis permutation and shear of the watertight
  * triangle test (Woop, Benthin and Wald 2013).
+ *
+ * <p>A ray built with the constructor never changes. The renderer traces millions of rays per second through one
+ * {@link ReusableRay} per thread instead, which {@link ReusableRay#set} points somewhere new for every ray: an
+ * {@link geometries.Intersectable} must not keep a reference to the ray it is given beyond the call.
  */
-public final class Ray {
-    private final Point head;
-    private final Vector direction;
+public class Ray {
+    /** Created on demand for reusable rays (the kernels read the raw coordinates below). */
+    private Point head;
 
-    /** Origin and unit direction, unpacked for the kernels. */
-    public final double ox, oy, oz, dx, dy, dz;
+    private Vector direction;
 
-    /** Reciprocal direction (may be infinite for zero components). */
-    public final double invDx, invDy, invDz;
-
-    /** Watertight triangle test: the dominant axis kz and the two others, and the shear constants. */
-    public final int kx, ky, kz;
-
-    public final double shearX, shearY, shearZ;
+    private double ox, oy, oz, dx, dy, dz;
+    private double invDx, invDy, invDz;
+    private int kx, ky, kz;
+    private double shearX, shearY, shearZ;
 
     /**
      * A ray from {@code head} along {@code direction}, which is normalized here. A NaN or infinite origin or a
@@ -30,14 +30,33 @@ public final class Ray {
     public Ray(Point head, Vector direction) {
         Util.requireNonNull(head, "ray origin");
         Util.requireNonNull(direction, "ray direction");
+        init(head.x, head.y, head.z, direction.x, direction.y, direction.z);
         this.head = head;
-        this.direction = direction.normalize();
-        ox = head.x;
-        oy = head.y;
-        oz = head.z;
-        dx = this.direction.x;
-        dy = this.direction.y;
-        dz = this.direction.z;
+    }
+
+    /** For {@link ReusableRay}: along +z from the origin until it is first set. */
+    Ray() {
+        init(0, 0, 0, 0, 0, 1);
+    }
+
+    /**
+     * Sets every field from an origin and a direction that need not be unit: normalized exactly as
+     * {@link Vector#normalize()} does (scaled by the largest component first), so a reusable ray and a constructed
+     * one along the same vector agree bit for bit.
+     */
+    final void init(double ox, double oy, double oz, double vx, double vy, double vz) {
+        head = null;
+        direction = null;
+        this.ox = ox;
+        this.oy = oy;
+        this.oz = oz;
+        double m = Math.max(Math.abs(vx), Math.max(Math.abs(vy), Math.abs(vz)));
+        double sx = vx / m, sy = vy / m, sz = vz / m;
+        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+        double dx = sx * inverseLength, dy = sy * inverseLength, dz = sz * inverseLength;
+        this.dx = dx;
+        this.dy = dy;
+        this.dz = dz;
         invDx = 1.0 / dx;
         invDy = 1.0 / dy;
         invDz = 1.0 / dz;
@@ -59,31 +78,104 @@ public final class Ray {
     }
 
     public Point getHead() {
+        if (head == null) head = new Point(ox, oy, oz);
         return head;
     }
 
     /** The unit direction. */
     public Vector getDirection() {
+        if (direction == null) direction = new Vector(dx, dy, dz);
         return direction;
     }
 
     /** The point at distance {@code t} along the ray; {@code t = 0} is the head itself. */
     public Point getPoint(double t) {
-        return t == 0 ? head : new Point(ox + t * dx, oy + t * dy, oz + t * dz);
+        return t == 0 ? getHead() : new Point(ox + t * dx, oy + t * dy, oz + t * dz);
+    }
+
+    /** Origin x (the kernels read the coordinates one by one; {@link #getHead()} is the same point). */
+    public final double ox() {
+        return ox;
+    }
+
+    public final double oy() {
+        return oy;
+    }
+
+    public final double oz() {
+        return oz;
+    }
+
+    /** Unit direction x (the components of {@link #getDirection()}). */
+    public final double dx() {
+        return dx;
+    }
+
+    public final double dy() {
+        return dy;
+    }
+
+    public final double dz() {
+        return dz;
+    }
+
+    /** {@code 1 / dx}: infinite for a zero component (the slab test handles it). */
+    public final double invDx() {
+        return invDx;
+    }
+
+    public final double invDy() {
+        return invDy;
+    }
+
+    public final double invDz() {
+        return invDz;
+    }
+
+    /** The watertight triangle test's axis permutation: {@code kz} is the axis of the largest direction component. */
+    public final int kx() {
+        return kx;
+    }
+
+    public final int ky() {
+        return ky;
+    }
+
+    public final int kz() {
+        return kz;
+    }
+
+    /** The watertight triangle test's shear constants: {@code -d[kx]/d[kz]}, {@code -d[ky]/d[kz]}, {@code 1/d[kz]}. */
+    public final double shearX() {
+        return shearX;
+    }
+
+    public final double shearY() {
+        return shearY;
+    }
+
+    public final double shearZ() {
+        return shearZ;
     }
 
     @Override
     public boolean equals(Object obj) {
-        return obj instanceof Ray other && head.equals(other.head) && direction.equals(other.direction);
+        return obj instanceof Ray other
+                && Double.compare(ox, other.ox) == 0
+                && Double.compare(oy, other.oy) == 0
+                && Double.compare(oz, other.oz) == 0
+                && Double.compare(dx, other.dx) == 0
+                && Double.compare(dy, other.dy) == 0
+                && Double.compare(dz, other.dz) == 0;
     }
 
     @Override
     public int hashCode() {
-        return head.hashCode() * 31 + direction.hashCode();
+        return getHead().hashCode() * 31 + getDirection().hashCode();
     }
 
     @Override
     public String toString() {
-        return "Ray{" + head + " -> " + direction + "}";
+        return "Ray{" + getHead() + " -> " + getDirection() + "}";
     }
 }

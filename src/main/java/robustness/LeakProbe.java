@@ -68,15 +68,17 @@ public final class LeakProbe {
             int a = 3 * f[t], b = 3 * f[t + 1], c = 3 * f[t + 2];
             double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];
             double e2x = v[c] - v[a], e2y = v[c + 1] - v[a + 1], e2z = v[c + 2] - v[a + 2];
-            double px = ray.dy * e2z - ray.dz * e2y, py = ray.dz * e2x - ray.dx * e2z, pz = ray.dx * e2y - ray.dy * e2x;
+            double px = ray.dy() * e2z - ray.dz() * e2y,
+                    py = ray.dz() * e2x - ray.dx() * e2z,
+                    pz = ray.dx() * e2y - ray.dy() * e2x;
             double det = e1x * px + e1y * py + e1z * pz;
             if (det == 0) continue;
             double inv = 1 / det;
-            double sx = ray.ox - v[a], sy = ray.oy - v[a + 1], sz = ray.oz - v[a + 2];
+            double sx = ray.ox() - v[a], sy = ray.oy() - v[a + 1], sz = ray.oz() - v[a + 2];
             double u = (sx * px + sy * py + sz * pz) * inv;
             if (u < 0 || u > 1) continue;
             double qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-            double w = (ray.dx * qx + ray.dy * qy + ray.dz * qz) * inv;
+            double w = (ray.dx() * qx + ray.dy() * qy + ray.dz() * qz) * inv;
             if (w < 0 || u + w > 1) continue;
             if ((e2x * qx + e2y * qy + e2z * qz) * inv > 0) return true;
         }

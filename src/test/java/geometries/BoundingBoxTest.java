@@ -122,7 +122,7 @@ class BoundingBoxTest {
     /** Length of the overlap of the ray's [0, inf) with the box's slabs (negative: the gap). */
     private static double referenceMargin(BoundingBox b, Ray r) {
         double lo = 0, hi = Double.POSITIVE_INFINITY;
-        double[] o = {r.ox, r.oy, r.oz}, d = {r.dx, r.dy, r.dz};
+        double[] o = {r.ox(), r.oy(), r.oz()}, d = {r.dx(), r.dy(), r.dz()};
         double[] min = {b.minX, b.minY, b.minZ}, max = {b.maxX, b.maxY, b.maxZ};
         for (int a = 0; a < 3; a++) {
             if (d[a] == 0) {

@@ -20,9 +20,9 @@ class RayTest {
         assertEquals(0.8, ray.getDirection().z, 1e-15);
         assertEquals(new Point(1, 2, 3), ray.getHead());
         // the unpacked fields agree with the objects
-        assertEquals(1, ray.ox);
-        assertEquals(ray.getDirection().y, ray.dy);
-        assertEquals(1 / 0.8, ray.invDz, DELTA);
+        assertEquals(1, ray.ox());
+        assertEquals(ray.getDirection().y, ray.dy());
+        assertEquals(1 / 0.8, ray.invDz(), DELTA);
     }
 
     @Test
@@ -58,19 +58,19 @@ class RayTest {
         Ray tiny = new Ray(Point.ZERO, new Vector(1e-300, 0, 0));
         assertEquals(Vector.AXIS_X, tiny.getDirection());
         Ray huge = new Ray(Point.ZERO, new Vector(1e300, 1e300, 0));
-        assertEquals(Math.sqrt(0.5), huge.dx, 1e-15);
-        assertEquals(Math.sqrt(0.5), huge.dy, 1e-15);
+        assertEquals(Math.sqrt(0.5), huge.dx(), 1e-15);
+        assertEquals(Math.sqrt(0.5), huge.dy(), 1e-15);
     }
 
     @Test
     void dominantAxisOfTheWatertightTestIsTheLargestComponent() {
-        assertEquals(0, new Ray(Point.ZERO, new Vector(-5, 1, 2)).kz);
-        assertEquals(1, new Ray(Point.ZERO, new Vector(1, 5, -2)).kz);
-        assertEquals(2, new Ray(Point.ZERO, new Vector(1, 2, -5)).kz);
+        assertEquals(0, new Ray(Point.ZERO, new Vector(-5, 1, 2)).kz());
+        assertEquals(1, new Ray(Point.ZERO, new Vector(1, 5, -2)).kz());
+        assertEquals(2, new Ray(Point.ZERO, new Vector(1, 2, -5)).kz());
         Ray r = new Ray(Point.ZERO, new Vector(1, 2, -5));
         // kx, ky are the other two axes
-        assertEquals(3, r.kx + r.ky + r.kz);
-        assertNotEquals(r.kx, r.ky);
+        assertEquals(3, r.kx() + r.ky() + r.kz());
+        assertNotEquals(r.kx(), r.ky());
     }
 
     @Test
