@@ -2,6 +2,7 @@ package cli;
 
 import java.io.Serializable;
 import picocli.CommandLine.Option;
+import primitives.Limits;
 import sceneio.model.CameraDocument;
 import sceneio.model.RenderDocument;
 import sceneio.model.SamplingDocument;
@@ -21,9 +22,6 @@ public final class RenderOverrides implements Serializable {
         ON,
         OFF
     }
-
-    /** The most anti-aliasing rays per pixel the core's sampling accepts. */
-    private static final int MAX_SAMPLES = 1 << 20;
 
     @Option(names = "--bvh", paramLabel = "on|off", description = "use the BVH (default: the scene's, else on)")
     private Switch bvh;
@@ -59,8 +57,8 @@ public final class RenderOverrides implements Serializable {
     /** Rejects values no scene could take, naming the option. */
     public void check() throws BadInputException {
         checkPositive("--samples", samples);
-        if (samples != null && samples > MAX_SAMPLES) {
-            throw new BadInputException("--samples must be <= " + MAX_SAMPLES + ", but was " + samples);
+        if (samples != null && samples > Limits.MAX_SAMPLES) {
+            throw new BadInputException("--samples must be <= " + Limits.MAX_SAMPLES + ", but was " + samples);
         }
         checkPositive("--width", width);
         checkPositive("--height", height);

@@ -389,23 +389,47 @@ public final class Accelerator implements Intersectable {
     /**
      * The fraction of light that passes along the ray through {@code (tMin, tMax)}: {@link Double3#ONE} when
      * nothing is in the way, {@link Double3#ZERO} when an opaque surface is, otherwise the product of the
-     * transparency kT of every surface crossed. Stops at the first opaque occluder. The factors are multiplied
-     * in primitive order so the result does not depend on the visiting order.
+     * transparency kT of every surface crossed. A convenience over {@link #passesLight}, which the renderer calls
+     * without allocating.
      */
     public Double3 transmittance(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        if (!passesLight(ray, tMin, tMax, scratch)) return Double3.ZERO;
+        if (scratch.transmitR == 1 && scratch.transmitG == 1 && scratch.transmitB == 1) return Double3.ONE;
+        return new Double3(scratch.transmitR, scratch.transmitG, scratch.transmitB);
+    }
+
+    /**
+     * The shadow query: whether light passes along the ray through {@code (tMin, tMax)}. False when an opaque
+     * surface is in the way (the search stops there); otherwise true, with the product of the transparency kT of
+     * every surface crossed in {@link HitRecord#transmitR}, {@code transmitG}, {@code transmitB} (exactly 1 when
+     * nothing is in the way). The factors are multiplied in primitive order, so the result does not depend on the
+     * visiting order; one or two factors need no ordering (a product of two doubles commutes exactly).
+     *
+     * <p>The occluder cache: the bounded primitive in slot {@link HitRecord#occluderHint} (when non-negative) is
+     * tested before the search, and the slot of the opaque primitive that blocked is left in
+     * {@link HitRecord#occluder} (-1 when none, or when the blocker was unbounded or may let light through). Callers
+     * keep the last occluder per light: neighbouring shadow rays toward a light are usually blocked by the same
+     * primitive. The answer is the same with any hint.
+     */
+    public boolean passesLight(Ray ray, double tMin, double tMax, HitRecord scratch) {
         scratch.transparentCount = 0;
-        if (anyHit(ray, tMin, tMax, scratch, true)) return Double3.ZERO;
+        if (anyHit(ray, tMin, tMax, scratch, true)) {
+            scratch.transmitR = scratch.transmitG = scratch.transmitB = 0;
+            return false;
+        }
         int count = scratch.transparentCount;
-        if (count == 0) return Double3.ONE;
-        scratch.sortTransparentHits();
         double r = 1, g = 1, b = 1;
+        if (count > 2) scratch.sortTransparentHits();
         for (int i = 0; i < count; i++) {
             Double3 kT = scratch.transparentKt[i];
             r *= kT.d1;
             g *= kT.d2;
             b *= kT.d3;
         }
-        return new Double3(r, g, b);
+        scratch.transmitR = r;
+        scratch.transmitG = g;
+        scratch.transmitB = b;
+        return true;
     }
 
     /**
@@ -414,7 +438,16 @@ public final class Accelerator implements Intersectable {
      */
     private boolean anyHit(Ray ray, double tMin, double tMax, HitRecord scratch, boolean honourTransparency) {
         long tests = 0;
+        scratch.occluder = -1;
         try {
+            int hint = scratch.occluderHint;
+            if (hint >= 0 && hint < boundedCount && !mayTransmit[hint]) {
+                tests++;
+                if (blocks(hint, false, ray, tMin, tMax, scratch)) {
+                    scratch.occluder = hint;
+                    return true;
+                }
+            }
             for (int j = 0; j < unbounded.length; j++) {
                 tests++;
                 boolean pass = honourTransparency && unboundedMayTransmit[j];
@@ -423,7 +456,10 @@ public final class Accelerator implements Intersectable {
             if (bvh == null) {
                 for (int k = 0; k < boundedCount; k++) {
                     tests++;
-                    if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) return true;
+                    if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                        if (!mayTransmit[k]) scratch.occluder = k;
+                        return true;
+                    }
                 }
                 return false;
             }
@@ -442,6 +478,7 @@ public final class Accelerator implements Intersectable {
                         for (int k = link, end = link + count; k < end; k++) {
                             tests++;
                             if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                                if (!mayTransmit[k]) scratch.occluder = k;
                                 return true;
                             }
                         }

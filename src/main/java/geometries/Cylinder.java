@@ -97,7 +97,6 @@ public class Cylinder extends Tube {
         Vector v = axis.getDirection();
         Vector normal = hit.part == TOP ? v : v.scale(-1);
         Plane.completePlanarHit(ray, hit, hit.part == TOP ? top : axis.getHead(), normal);
-        hit.normal = normal;
-        hit.shadingNormal = normal;
+        hit.setNormal(normal);
     }
 }

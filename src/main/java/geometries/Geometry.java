@@ -42,7 +42,7 @@ public abstract class Geometry implements Intersectable {
     public abstract Vector getNormal(Point point);
 
     /**
-     * Fills {@code hit.point}, {@code hit.normal}, {@code hit.shadingNormal} and the error bound from the
+     * Fills the hit point ({@code hit.px, py, pz}), the geometric and shading normals and the error bound from the
      * distance and local coordinates an intersection query left in {@code hit}.
      */
     public abstract void completeHit(Ray ray, HitRecord hit);

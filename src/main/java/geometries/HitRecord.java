@@ -25,11 +25,11 @@ public final class HitRecord {
     int primitiveIndex = Integer.MAX_VALUE;
 
     /** The hit point, refined onto the surface. */
-    public Point point;
+    public double px, py, pz;
     /** The unit geometric normal; outward for closed shapes, by vertex order for triangles. */
-    public Vector normal;
+    public double nx, ny, nz;
     /** The unit shading normal (interpolated vertex normals of meshes; otherwise the geometric normal). */
-    public Vector shadingNormal;
+    public double snx, sny, snz;
     /** Per-axis bound on the absolute floating-point error of {@link #point}. */
     public double errorX, errorY, errorZ;
 
@@ -42,6 +42,18 @@ public final class HitRecord {
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */
     public long nodeVisits, primitiveTests;
+
+    /**
+     * Result of {@link Accelerator#passesLight}: the product of the kT of the transparent surfaces crossed, per
+     * channel (1 when nothing is in the way, 0 when blocked).
+     */
+    public double transmitR, transmitG, transmitB;
+
+    /**
+     * The occluder cache of {@link Accelerator#passesLight}: a primitive slot to test first (-1: none), and the slot
+     * of the opaque primitive that blocked the last query (-1: none).
+     */
+    public int occluderHint = -1, occluder = -1;
 
     /** Transparent surfaces a shadow ray crossed: primitive id and kT, multiplied in id order. */
     int transparentCount;
@@ -82,10 +94,41 @@ public final class HitRecord {
         u = 0;
         v = 0;
         primitiveIndex = Integer.MAX_VALUE;
-        point = null;
-        normal = null;
-        shadingNormal = null;
         return this;
+    }
+
+    /** The hit point as a {@link Point} (allocates: for tests and users; the renderer reads the fields). */
+    public Point point() {
+        return new Point(px, py, pz);
+    }
+
+    /** The geometric normal as a {@link Vector} (allocates). */
+    public Vector normal() {
+        return new Vector(nx, ny, nz);
+    }
+
+    /** The shading normal as a {@link Vector} (allocates). */
+    public Vector shadingNormal() {
+        return new Vector(snx, sny, snz);
+    }
+
+    /** Sets the refined hit point. */
+    public void setPoint(double x, double y, double z) {
+        px = x;
+        py = y;
+        pz = z;
+    }
+
+    /** Sets the geometric normal and, to the same unit vector, the shading normal. */
+    public void setNormal(double x, double y, double z) {
+        nx = snx = x;
+        ny = sny = y;
+        nz = snz = z;
+    }
+
+    /** Sets the geometric normal and the shading normal to {@code n}. */
+    public void setNormal(Vector n) {
+        setNormal(n.x, n.y, n.z);
     }
 
     /** Sets the surface error bound of the hit point. */

@@ -188,24 +188,33 @@ public class Mesh extends Geometry {
         int i = hit.part;
         int a = 3 * indices[3 * i], b = 3 * indices[3 * i + 1], c = 3 * indices[3 * i + 2];
         WatertightTriangle.completeHit(vertices, a, b, c, hit);
-        Vector normal = WatertightTriangle.normal(vertices, a, b, c);
-        Vector shading = normals == null ? null : interpolatedNormal(a, b, c, hit.u, hit.v);
-        if (shading == null) {
-            shading = normal;
-        } else if (shading.dotProduct(normal) < 0) {
-            normal = normal.scale(-1); // the vertex normals define the outside (as in pbrt)
-        }
-        hit.normal = normal;
-        hit.shadingNormal = shading;
+        if (!WatertightTriangle.setNormal(vertices, a, b, c, hit)) hit.setNormal(0, 0, 0); // never for a hit
+        if (normals != null) interpolateShadingNormal(a, b, c, hit);
     }
 
-    /** Barycentric blend of the vertex normals at offsets a, b, c; null if they cancel out. */
-    private Vector interpolatedNormal(int a, int b, int c, double b1, double b2) {
+    /**
+     * Sets the shading normal to the barycentric blend of the vertex normals at offsets a, b, c, normalized (left
+     * at the geometric normal if they cancel out); the vertex normals define the outside, as in pbrt, so the
+     * geometric normal is flipped to their side.
+     */
+    private void interpolateShadingNormal(int a, int b, int c, HitRecord hit) {
+        double b1 = hit.u, b2 = hit.v;
         double b0 = 1 - b1 - b2;
         double nx = b0 * normals[a] + b1 * normals[b] + b2 * normals[c];
         double ny = b0 * normals[a + 1] + b1 * normals[b + 1] + b2 * normals[c + 1];
         double nz = b0 * normals[a + 2] + b1 * normals[b + 2] + b2 * normals[c + 2];
-        if (nx == 0 && ny == 0 && nz == 0) return null;
-        return new Vector(nx, ny, nz).normalize();
+        if (nx == 0 && ny == 0 && nz == 0) return;
+        // Vector.normalize's arithmetic: scaled by the largest component first.
+        double m = Math.max(Math.abs(nx), Math.max(Math.abs(ny), Math.abs(nz)));
+        double sx = nx / m, sy = ny / m, sz = nz / m;
+        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+        hit.snx = sx * inverseLength;
+        hit.sny = sy * inverseLength;
+        hit.snz = sz * inverseLength;
+        if (hit.snx * hit.nx + hit.sny * hit.ny + hit.snz * hit.nz < 0) {
+            hit.nx = -hit.nx;
+            hit.ny = -hit.ny;
+            hit.nz = -hit.nz;
+        }
     }
 }

@@ -77,8 +77,7 @@ public class Plane extends Geometry {
     @Override
     public void completeHit(Ray ray, HitRecord hit) {
         completePlanarHit(ray, hit, point, normal);
-        hit.normal = normal;
-        hit.shadingNormal = normal;
+        hit.setNormal(normal);
     }
 
     /**
@@ -92,7 +91,7 @@ public class Plane extends Geometry {
         px -= s * n.x;
         py -= s * n.y;
         pz -= s * n.z;
-        hit.point = new Point(px, py, pz);
+        hit.setPoint(px, py, pz);
         double g = gamma(5);
         hit.setError(
                 g * (Math.abs(px) + Math.abs(q.x)),

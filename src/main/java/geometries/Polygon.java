@@ -186,7 +186,6 @@ public class Polygon extends Geometry {
     public void completeHit(Ray ray, HitRecord hit) {
         int o = 9 * hit.part;
         WatertightTriangle.completeHit(fan, o, o + 3, o + 6, hit);
-        hit.normal = normal;
-        hit.shadingNormal = normal;
+        hit.setNormal(normal);
     }
 }

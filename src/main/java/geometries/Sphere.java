@@ -90,19 +90,22 @@ public class Sphere extends Geometry {
         double ly = ray.oy() + t * ray.dy() - center.y;
         double lz = ray.oz() + t * ray.dz() - center.z;
         double length = Math.sqrt(lx * lx + ly * ly + lz * lz);
-        Vector normal;
+        double nx, ny, nz;
         if (length > 0) {
-            normal = new Vector(lx / length, ly / length, lz / length);
-        } else {
-            normal = ray.getDirection().scale(-1); // only for radii near underflow
+            nx = lx / length;
+            ny = ly / length;
+            nz = lz / length;
+        } else { // only for radii near underflow
+            nx = -ray.dx();
+            ny = -ray.dy();
+            nz = -ray.dz();
         }
         // Re-project onto the sphere: the error is then that of the final sum plus a few ulps of the radius.
-        double px = center.x + radius * normal.x;
-        double py = center.y + radius * normal.y;
-        double pz = center.z + radius * normal.z;
-        hit.point = new Point(px, py, pz);
-        hit.normal = normal;
-        hit.shadingNormal = normal;
+        double px = center.x + radius * nx;
+        double py = center.y + radius * ny;
+        double pz = center.z + radius * nz;
+        hit.setPoint(px, py, pz);
+        hit.setNormal(nx, ny, nz);
         double g = gamma(2), gr = gamma(6) * radius;
         hit.setError(g * Math.abs(px) + gr, g * Math.abs(py) + gr, g * Math.abs(pz) + gr);
     }

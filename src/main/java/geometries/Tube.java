@@ -120,15 +120,22 @@ public class Tube extends Geometry {
         double h = wx * vx + wy * vy + wz * vz;
         double rx = wx - h * vx, ry = wy - h * vy, rz = wz - h * vz;
         double length = Math.sqrt(rx * rx + ry * ry + rz * rz);
-        Vector normal = length > 0
-                ? new Vector(rx / length, ry / length, rz / length)
-                : axis.getDirection().perpendicular();
-        double px = axis.ox() + h * vx + radius * normal.x;
-        double py = axis.oy() + h * vy + radius * normal.y;
-        double pz = axis.oz() + h * vz + radius * normal.z;
-        hit.point = new Point(px, py, pz);
-        hit.normal = normal;
-        hit.shadingNormal = normal;
+        double nx, ny, nz;
+        if (length > 0) {
+            nx = rx / length;
+            ny = ry / length;
+            nz = rz / length;
+        } else { // on the axis itself: any direction across it
+            Vector across = axis.getDirection().perpendicular();
+            nx = across.x;
+            ny = across.y;
+            nz = across.z;
+        }
+        double px = axis.ox() + h * vx + radius * nx;
+        double py = axis.oy() + h * vy + radius * ny;
+        double pz = axis.oz() + h * vz + radius * nz;
+        hit.setPoint(px, py, pz);
+        hit.setNormal(nx, ny, nz);
         double g = gamma(4), gr = gamma(8) * radius;
         double ah = Math.abs(h);
         hit.setError(

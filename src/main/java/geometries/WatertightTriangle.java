@@ -3,7 +3,6 @@ package geometries;
 import static primitives.Util.differenceOfProducts;
 import static primitives.Util.gamma;
 
-import primitives.Point;
 import primitives.Ray;
 
 /**
@@ -151,7 +150,7 @@ public final class WatertightTriangle {
     }
 
     /**
-     * Fills {@code hit.point} from the barycentrics {@code hit.u = b1}, {@code hit.v = b2} as
+     * Fills the hit point ({@code hit.px, py, pz}) from the barycentrics {@code hit.u = b1}, {@code hit.v = b2} as
      * {@code v0 + b1 (v1 - v0) + b2 (v2 - v0)}, and its per-axis error bound: any barycentrics give a point in
      * the plane, so only the rounding of the edge terms and of the final sum moves the point off the surface.
      */
@@ -162,7 +161,7 @@ public final class WatertightTriangle {
         double px = v[a] + b1 * e1x + b2 * e2x;
         double py = v[a + 1] + b1 * e1y + b2 * e2y;
         double pz = v[a + 2] + b1 * e1z + b2 * e2z;
-        hit.point = new Point(px, py, pz);
+        hit.setPoint(px, py, pz);
         double g = gamma(6);
         double g2 = gamma(2);
         hit.setError(
@@ -181,6 +180,25 @@ public final class WatertightTriangle {
         return differenceOfProducts(e1y, e2z, e1z, e2y) != 0
                 || differenceOfProducts(e1z, e2x, e1x, e2z) != 0
                 || differenceOfProducts(e1x, e2y, e1y, e2x) != 0;
+    }
+
+    /**
+     * Sets the hit's geometric and shading normal to the unit normal (v1 - v0) x (v2 - v0), exactly as
+     * {@link #normal} computes it; false (and nothing set) if the triangle has no area.
+     */
+    static boolean setNormal(double[] v, int a, int b, int c, HitRecord hit) {
+        double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];
+        double e2x = v[c] - v[a], e2y = v[c + 1] - v[a + 1], e2z = v[c + 2] - v[a + 2];
+        double nx = differenceOfProducts(e1y, e2z, e1z, e2y);
+        double ny = differenceOfProducts(e1z, e2x, e1x, e2z);
+        double nz = differenceOfProducts(e1x, e2y, e1y, e2x);
+        if (nx == 0 && ny == 0 && nz == 0) return false;
+        // Vector.normalize's arithmetic: scaled by the largest component first.
+        double m = Math.max(Math.abs(nx), Math.max(Math.abs(ny), Math.abs(nz)));
+        double sx = nx / m, sy = ny / m, sz = nz / m;
+        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+        hit.setNormal(sx * inverseLength, sy * inverseLength, sz * inverseLength);
+        return true;
     }
 
     /** The unit geometric normal (v1 - v0) x (v2 - v0) of a triangle, or null if it has no area. */

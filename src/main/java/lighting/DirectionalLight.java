@@ -30,6 +30,17 @@ public final class DirectionalLight implements LightSource {
         return Double.POSITIVE_INFINITY;
     }
 
+    @Override
+    public void illuminate(double x, double y, double z, LightSample out) {
+        out.distance = Double.POSITIVE_INFINITY;
+        out.lx = direction.x;
+        out.ly = direction.y;
+        out.lz = direction.z;
+        out.r = intensity.getR();
+        out.g = intensity.getG();
+        out.b = intensity.getB();
+    }
+
     public Vector getDirection() {
         return direction;
     }

@@ -34,6 +34,25 @@ public interface LightSource {
         return 1;
     }
 
+    /**
+     * Fills {@code out} with what this light gives the point (x, y, z): {@link #getDistance}, then, unless that is
+     * 0, {@link #getL} and {@link #getIntensity}, with the same values. The built-in lights override it to allocate
+     * nothing; this default goes through the methods above (a light of your own works unchanged).
+     */
+    default void illuminate(double x, double y, double z, LightSample out) {
+        Point p = new Point(x, y, z);
+        out.distance = getDistance(p);
+        if (out.distance == 0) return;
+        Vector l = getL(p);
+        out.lx = l.x;
+        out.ly = l.y;
+        out.lz = l.z;
+        Color c = getIntensity(p);
+        out.r = c.getR();
+        out.g = c.getG();
+        out.b = c.getB();
+    }
+
     /** Whether this light casts soft shadows (a radius and more than one sample). */
     default boolean isSoft() {
         return getRadius() > 0 && getNumSamples() > 1;

@@ -1,6 +1,7 @@
 package lighting;
 
 import primitives.Color;
+import primitives.Limits;
 import primitives.Point;
 import primitives.Util;
 import primitives.Vector;
@@ -43,10 +44,14 @@ public class PointLight implements LightSource {
         return this;
     }
 
-    /** Shadow rays per shading point when the radius is positive. */
+    /**
+     * Shadow rays per shading point when the radius is positive, 1 to {@link Limits.MAX_SAMPLES} (the
+     * limit of anti-aliasing too).
+     */
     public PointLight setNumSamples(int numSamples) {
-        if (numSamples < 1) {
-            throw new IllegalArgumentException("light numSamples must be >= 1, but was " + numSamples);
+        if (numSamples < 1 || numSamples > Limits.MAX_SAMPLES) {
+            throw new IllegalArgumentException(
+                    "light numSamples must be in [1, " + Limits.MAX_SAMPLES + "], but was " + numSamples);
         }
         this.numSamples = numSamples;
         return this;
@@ -70,12 +75,44 @@ public class PointLight implements LightSource {
     public Color getIntensity(Point point) {
         double d = getDistance(point);
         if (d > range) return Color.BLACK;
+        return intensity.scale(1 / attenuation(d));
+    }
+
+    /**
+     * {@link #getDistance}, {@link #getL} and {@link #getIntensity} at once, with the same arithmetic and so the
+     * same values, allocating nothing.
+     */
+    @Override
+    public void illuminate(double x, double y, double z, LightSample out) {
+        double dx = x - position.x, dy = y - position.y, dz = z - position.z;
+        double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        out.distance = d;
+        if (d == 0) return;
+        // Vector.normalize's arithmetic: scaled by the largest component first.
+        double m = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        double sx = dx / m, sy = dy / m, sz = dz / m;
+        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+        out.lx = sx * inverseLength;
+        out.ly = sy * inverseLength;
+        out.lz = sz * inverseLength;
+        if (d > range) {
+            out.r = out.g = out.b = 0;
+            return;
+        }
+        double f = 1 / attenuation(d);
+        out.r = intensity.getR() * f;
+        out.g = intensity.getG() * f;
+        out.b = intensity.getB() * f;
+    }
+
+    /** {@code kC + kL d + kQ d^2}, which must be positive. */
+    private double attenuation(double d) {
         double attenuation = kC + kL * d + kQ * d * d;
         if (!(attenuation > 0)) {
             throw new IllegalStateException("light attenuation kC + kL d + kQ d^2 must be positive, but was "
                     + attenuation + " at distance " + d + " (kC=" + kC + ", kL=" + kL + ", kQ=" + kQ + ")");
         }
-        return intensity.scale(1 / attenuation);
+        return attenuation;
     }
 
     @Override

@@ -72,6 +72,21 @@ public class SpotLight extends PointLight {
         return super.getIntensity(point).scale(factor);
     }
 
+    @Override
+    public void illuminate(double x, double y, double z, LightSample out) {
+        super.illuminate(x, y, z, out);
+        if (out.distance == 0) return;
+        double cos = direction.x * out.lx + direction.y * out.ly + direction.z * out.lz;
+        if (!(cos > 0)) {
+            out.r = out.g = out.b = 0;
+            return;
+        }
+        double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);
+        out.r *= factor;
+        out.g *= factor;
+        out.b *= factor;
+    }
+
     public Vector getDirection() {
         return direction;
     }

@@ -64,7 +64,12 @@ public final class Vector extends Point {
 
     /** The length, computed without overflow or underflow. */
     public double length() {
-        double m = maxAbsComponent();
+        return length(x, y, z);
+    }
+
+    /** The length of (x, y, z), exactly as {@link #length()} computes it (scaled by the largest component first). */
+    public static double length(double x, double y, double z) {
+        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
         double sx = x / m;
         double sy = y / m;
         double sz = z / m;

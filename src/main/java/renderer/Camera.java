@@ -8,6 +8,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import primitives.Color;
 import primitives.Point;
 import primitives.Ray;
+import primitives.ReusableRay;
 import primitives.Util;
 import primitives.Vector;
 import renderer.sampling.SampleStream;
@@ -189,10 +190,15 @@ public final class Camera implements Cloneable {
 
     /** The ray through view-plane coordinates (u right, v up) from the pinhole. */
     private Ray rayThrough(double u, double v) {
+        return rayThrough(u, v, new ReusableRay());
+    }
+
+    /** Points {@code ray} from the pinhole through view-plane coordinates (u right, v up). */
+    private Ray rayThrough(double u, double v, ReusableRay ray) {
         double dx = vpDistance * vTo.x + u * vRight.x + v * vUp.x;
         double dy = vpDistance * vTo.y + u * vRight.y + v * vUp.y;
         double dz = vpDistance * vTo.z + u * vRight.z + v * vUp.z;
-        return new Ray(location, new Vector(dx, dy, dz));
+        return ray.set(location.x, location.y, location.z, dx, dy, dz);
     }
 
     // ------------------------------------------------------------------ rendering
@@ -336,7 +342,10 @@ public final class Camera implements Cloneable {
             double u = (x - (nX - 1) / 2.0) * pixelWidth;
             double v = -(y - (nY - 1) / 2.0) * pixelHeight;
             int count = antiAliasing.getSampleCount();
-            if (count == 1) return sample(u, v, pixelSeed, ctx);
+            if (count == 1) {
+                sample(u, v, pixelSeed, ctx);
+                return ctx.color();
+            }
             if (antiAliasing.isAdaptive() && adaptiveDepth > 0) return adaptive(u, v, pixelSeed, ctx);
             double[] offsets = gridOffsets;
             if (offsets == null) {
@@ -348,22 +357,27 @@ public final class Camera implements Cloneable {
                         ctx.random.reset(SampleStream.mix(pixelSeed, AA_STREAM)),
                         offsets);
             }
-            ColorAverage average = new ColorAverage();
+            ColorAverage average = ctx.pixelAverage.reset();
             for (int s = 0; s < count; s++) {
-                average.add(sample(
+                sample(
                         u + offsets[2 * s] * pixelWidth,
                         v + offsets[2 * s + 1] * pixelHeight,
                         SampleStream.mix(pixelSeed, s),
-                        ctx));
+                        ctx);
+                average.add(ctx);
             }
             return average.mean();
         }
 
-        /** One pixel sample at view-plane point (u, v): a pinhole ray, or a beam over the lens. */
-        private Color sample(double u, double v, long path, TraceContext ctx) {
+        /**
+         * One pixel sample at view-plane point (u, v), a pinhole ray or a beam over the lens; the colour is left in
+         * {@code ctx.red, green, blue}.
+         */
+        private void sample(double u, double v, long path, TraceContext ctx) {
             if (!lens) {
                 ctx.counters.camera++;
-                return rayTracer.traceRay(rayThrough(u, v), ctx, path);
+                rayTracer.trace(rayThrough(u, v, ctx.ray), ctx, path);
+                return;
             }
             int count = apertureSampling.getSampleCount();
             double[] offsets = ctx.lensOffsets(count);
@@ -379,20 +393,20 @@ public final class Camera implements Cloneable {
             double fy = location.y + scale * (vpDistance * vTo.y + u * vRight.y + v * vUp.y);
             double fz = location.z + scale * (vpDistance * vTo.z + u * vRight.z + v * vUp.z);
             double diameter = 2 * apertureRadius;
-            ColorAverage average = new ColorAverage();
+            ColorAverage average = ctx.lensAverage.reset();
             for (int i = 0; i < count; i++) {
                 double a = offsets[2 * i] * diameter, b = offsets[2 * i + 1] * diameter;
-                Point origin = new Point(
-                        location.x + a * vRight.x + b * vUp.x,
-                        location.y + a * vRight.y + b * vUp.y,
-                        location.z + a * vRight.z + b * vUp.z);
-                Ray ray = new Ray(origin, new Vector(fx - origin.x, fy - origin.y, fz - origin.z));
+                double ox = location.x + a * vRight.x + b * vUp.x;
+                double oy = location.y + a * vRight.y + b * vUp.y;
+                double oz = location.z + a * vRight.z + b * vUp.z;
+                Ray ray = ctx.ray.set(ox, oy, oz, fx - ox, fy - oy, fz - oz);
                 ctx.counters.camera++;
                 ctx.counters.depthOfField++;
                 // A zero aperture (planning off) fires identical rays: same path, so the mean is exact.
-                average.add(rayTracer.traceRay(ray, ctx, apertureRadius > 0 ? SampleStream.mix(path, i) : path));
+                rayTracer.trace(ray, ctx, apertureRadius > 0 ? SampleStream.mix(path, i) : path);
+                average.add(ctx);
             }
-            return average.mean();
+            average.meanInto(ctx);
         }
 
         /**
@@ -442,7 +456,8 @@ public final class Camera implements Cloneable {
                 // points on the border would also be samples of the neighbouring pixels and blur the image.
                 double du = ((i + 0.5) / side - 0.5) * pixelWidth;
                 double dv = ((j + 0.5) / side - 0.5) * pixelHeight;
-                c = sample(u + du, v - dv, SampleStream.mix(seed, ADAPTIVE_PATHS + index), ctx);
+                sample(u + du, v - dv, SampleStream.mix(seed, ADAPTIVE_PATHS + index), ctx);
+                c = ctx.color();
                 cache[index] = c;
             }
             return c;

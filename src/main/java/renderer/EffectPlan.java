@@ -28,6 +28,9 @@ public final class EffectPlan {
     final boolean refraction;
     final boolean glossy;
     final boolean shadows;
+    /** Display steps of direct light a camera sample may leave out (0: exact); see RenderSettings#lightCutoff. */
+    final double lightCutoff;
+
     private final List<String> simulated = new ArrayList<>();
     private final List<String> skipped = new ArrayList<>();
 
@@ -64,8 +67,25 @@ public final class EffectPlan {
                 skipped.add("area sampling for " + (scene.lights.size() - soft) + " lights (radius 0 or one sample)");
             }
         }
+        lightCutoff = lightCutoff(settings.lightCutoff(), survey, shadows || !scene.lights.isEmpty());
         simulated.add(
                 "recursion to level " + settings.maxLevel() + ", cut below attenuation " + settings.minAttenuation());
+    }
+
+    /**
+     * The light cut-off in force: the setting, unless the scene could make a light's real contribution exceed the
+     * unshadowed bound the cut-off relies on (a transmittance kT above 1, or geometry of unknown type).
+     */
+    private double lightCutoff(double setting, MaterialSurvey survey, boolean lit) {
+        if (!(setting > 0) || !lit) return 0;
+        String what = "lights adding less than " + setting + " display steps in all to a camera sample";
+        if (survey.unknown || survey.maxKt > 1) {
+            simulated.add(what + " (light cut-off off: "
+                    + (survey.unknown ? "geometry of unknown type" : "a material has kT > 1") + ")");
+            return 0;
+        }
+        skipped.add(what + " (light cut-off)");
+        return setting;
     }
 
     /** The plan for rendering {@code scene} with {@code settings}. */
@@ -111,6 +131,9 @@ public final class EffectPlan {
     /** Which optical features the scene's materials use. */
     private static final class MaterialSurvey {
         boolean reflective, transparent, rough, unknown;
+        /** The largest transmittance coefficient of any material (a shadow ray can gain light above 1). */
+        double maxKt;
+
         boolean onlyFlat = true;
         int primitives;
 
@@ -130,6 +153,7 @@ public final class EffectPlan {
             reflective |= m.isReflective();
             transparent |= m.isTransparent();
             rough |= m.getRoughness() > 0 && (m.isReflective() || m.isTransparent());
+            maxKt = Math.max(maxKt, m.getKt().max());
         }
     }
 }

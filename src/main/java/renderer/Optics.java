@@ -19,7 +19,28 @@ public final class Optics {
      * would run along the surface, so it is reflected too). An index of 1 passes straight through, bit for bit.
      */
     public static Vector refract(Vector v, Vector n, double nv, double indexOfRefraction) {
-        if (indexOfRefraction == 1) return v;
+        double[] d = new double[3];
+        refract(v.x, v.y, v.z, n.x, n.y, n.z, nv, indexOfRefraction, d);
+        return new Vector(d[0], d[1], d[2]);
+    }
+
+    /** {@link #refract(Vector, Vector, double, double)} on coordinates, writing the direction to {@code out[0..3)}. */
+    public static void refract(
+            double vx,
+            double vy,
+            double vz,
+            double nx,
+            double ny,
+            double nz,
+            double nv,
+            double indexOfRefraction,
+            double[] out) {
+        if (indexOfRefraction == 1) {
+            out[0] = vx;
+            out[1] = vy;
+            out[2] = vz;
+            return;
+        }
         double cosI = -nv;
         double eta;
         double sign = 1;
@@ -31,10 +52,18 @@ public final class Optics {
             sign = -1;
         }
         double sin2T = eta * eta * Math.max(0, 1 - cosI * cosI);
-        if (sin2T >= 1) return reflect(v, n, nv); // total internal reflection
+        if (sin2T >= 1) { // total internal reflection
+            double f = 2 * nv;
+            out[0] = vx - f * nx;
+            out[1] = vy - f * ny;
+            out[2] = vz - f * nz;
+            return;
+        }
         double cosT = Math.sqrt(1 - sin2T);
         double f = sign * (eta * cosI - cosT);
-        return new Vector(eta * v.x + f * n.x, eta * v.y + f * n.y, eta * v.z + f * n.z);
+        out[0] = eta * vx + f * nx;
+        out[1] = eta * vy + f * ny;
+        out[2] = eta * vz + f * nz;
     }
 
     /** Whether light along unit {@code v} is totally reflected at a surface with normal {@code n}. */

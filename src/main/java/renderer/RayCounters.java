@@ -15,6 +15,10 @@ public final class RayCounters {
     public long depthOfField;
     /** Samples that adaptive anti-aliasing and adaptive shadows did not need to fire. */
     public long samplesSaved;
+    /** Lights not sampled at a shading point because they could not matter there (the light cut-off). */
+    public long lightsCutOff;
+    /** Shadow rays those lights would have cost at the least (one per hard light, the probes of an adaptive disk). */
+    public long shadowRaysCutOff;
 
     /** Adds another thread's counts to these. */
     public void add(RayCounters other) {
@@ -25,6 +29,8 @@ public final class RayCounters {
         glossy += other.glossy;
         depthOfField += other.depthOfField;
         samplesSaved += other.samplesSaved;
+        lightsCutOff += other.lightsCutOff;
+        shadowRaysCutOff += other.shadowRaysCutOff;
     }
 
     /** All rays fired. */

@@ -29,10 +29,17 @@ public abstract class RayTracerBase {
     public abstract boolean isPrepared();
 
     /**
-     * The colour seen along {@code ray}. {@code pathSeed} identifies the path (pixel and sample) so that every
-     * random decision below it is reproducible whatever thread traces it.
+     * Traces {@code ray} and leaves the colour seen along it in {@code context.red}, {@code green} and
+     * {@code blue}: the render loop's entry, which allocates nothing. {@code pathSeed} identifies the path (pixel
+     * and sample) so that every random decision below it is reproducible whatever thread traces it.
      */
-    public abstract Color traceRay(Ray ray, TraceContext context, long pathSeed);
+    public abstract void trace(Ray ray, TraceContext context, long pathSeed);
+
+    /** The colour seen along {@code ray}: {@link #trace} returning a {@link Color}. */
+    public Color traceRay(Ray ray, TraceContext context, long pathSeed) {
+        trace(ray, context, pathSeed);
+        return context.color();
+    }
 
     /** The colour along one ray, preparing with default settings if needed (not thread-safe). */
     public Color traceRay(Ray ray) {

@@ -19,6 +19,10 @@ import renderer.sampling.TargetShape;
  * @param shadowPattern placement of shadow rays on a light's disk
  * @param adaptiveShadows probe a few shadow rays first and fire the rest only where the probes disagree
  * @param glossySampling rays per glossy reflection or frosted refraction (shape is always a cone: CIRCLE)
+ * @param lightCutoff the most direct light, in display steps (the 0..255 scale of a channel), that one camera
+ *     sample may leave out by not sampling lights too faint to matter where they are (no shadow rays toward them);
+ *     0 is exact. The default 0.5 can change a channel of the 8-bit image by at most one step, and only where its
+ *     exact value lies within half a step of a rounding boundary (docs/BENCHMARKS.md, "Lights that cannot matter")
  */
 public record RenderSettings(
         boolean useBvh,
@@ -29,9 +33,13 @@ public record RenderSettings(
         double minAttenuation,
         SamplingPattern shadowPattern,
         boolean adaptiveShadows,
-        SamplingConfig glossySampling) {
+        SamplingConfig glossySampling,
+        double lightCutoff) {
 
-    /** BVH on, planning on, 10 levels, cutoff 0.001, jittered shadows, 16 jittered glossy rays. */
+    /**
+     * BVH on, planning on, 10 levels, recursion cut below attenuation 0.001, jittered shadows, 16 jittered glossy
+     * rays, light cut-off half a display step.
+     */
     public static final RenderSettings DEFAULT = new RenderSettings(
             true,
             Accelerator.DEFAULT_BINS,
@@ -41,7 +49,8 @@ public record RenderSettings(
             0.001,
             SamplingPattern.JITTERED,
             false,
-            new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED));
+            new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED),
+            0.5);
 
     public RenderSettings {
         if (bvhBins < 2 || bvhBins > 256) {
@@ -58,6 +67,9 @@ public record RenderSettings(
         }
         if (shadowPattern == null) throw new IllegalArgumentException("shadowPattern must not be null");
         if (glossySampling == null) throw new IllegalArgumentException("glossySampling must not be null");
+        if (!(lightCutoff >= 0 && lightCutoff <= 255)) {
+            throw new IllegalArgumentException("lightCutoff must be in [0, 255] display steps, but was " + lightCutoff);
+        }
     }
 
     public RenderSettings withBvh(boolean on) {
@@ -70,7 +82,8 @@ public record RenderSettings(
                 minAttenuation,
                 shadowPattern,
                 adaptiveShadows,
-                glossySampling);
+                glossySampling,
+                lightCutoff);
     }
 
     public RenderSettings withBvhBuild(int bins, int maxLeafSize) {
@@ -83,7 +96,8 @@ public record RenderSettings(
                 minAttenuation,
                 shadowPattern,
                 adaptiveShadows,
-                glossySampling);
+                glossySampling,
+                lightCutoff);
     }
 
     public RenderSettings withPlanEffects(boolean on) {
@@ -96,7 +110,8 @@ public record RenderSettings(
                 minAttenuation,
                 shadowPattern,
                 adaptiveShadows,
-                glossySampling);
+                glossySampling,
+                lightCutoff);
     }
 
     public RenderSettings withRecursion(int maxLevel, double minAttenuation) {
@@ -109,7 +124,8 @@ public record RenderSettings(
                 minAttenuation,
                 shadowPattern,
                 adaptiveShadows,
-                glossySampling);
+                glossySampling,
+                lightCutoff);
     }
 
     public RenderSettings withShadowSampling(SamplingPattern pattern, boolean adaptive) {
@@ -122,7 +138,8 @@ public record RenderSettings(
                 minAttenuation,
                 pattern,
                 adaptive,
-                glossySampling);
+                glossySampling,
+                lightCutoff);
     }
 
     public RenderSettings withGlossySampling(SamplingConfig glossy) {
@@ -135,6 +152,22 @@ public record RenderSettings(
                 minAttenuation,
                 shadowPattern,
                 adaptiveShadows,
-                glossy);
+                glossy,
+                lightCutoff);
+    }
+
+    /** The light cut-off in display steps (0 = exact); see the class description. */
+    public RenderSettings withLightCutoff(double displaySteps) {
+        return new RenderSettings(
+                useBvh,
+                bvhBins,
+                bvhMaxLeafSize,
+                planEffects,
+                maxLevel,
+                minAttenuation,
+                shadowPattern,
+                adaptiveShadows,
+                glossySampling,
+                displaySteps);
     }
 }

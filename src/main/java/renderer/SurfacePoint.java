@@ -3,47 +3,116 @@ package renderer;
 import geometries.Geometry;
 import geometries.HitRecord;
 import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
 import primitives.Vector;
 
 /**
  * A shaded surface point copied out of the thread's {@link HitRecord} (which the next query overwrites): the
- * geometry, the refined point with its error bound, and the geometric and shading normals.
+ * geometry, the refined point with its error bound, and the geometric and shading normals. The tracer keeps one
+ * per recursion level and per thread and {@link #set}s it for every hit, so shading allocates nothing.
  *
- * <p>{@link #spawnOrigin} is where secondary rays start: the point pushed along the geometric normal, to the
- * side the ray leaves toward, by the projection of the error bound on the normal, then rounded one more ulp away
+ * <p>{@link #spawn} computes where secondary rays start: the point pushed along the geometric normal, to the side
+ * the ray leaves toward, by the projection of the error bound on the normal, then rounded one more ulp away
  * (pbrt-v4's {@code OffsetRayOrigin}). The offset scales with the coordinates, so there is neither acne far from
  * the origin nor a missed thin gap near it, and no fixed epsilon.
  */
 public final class SurfacePoint {
-    public final Geometry geometry;
-    public final Point point;
-    public final Vector normal;
-    public final Vector shadingNormal;
-    private final double errorX, errorY, errorZ;
+    public Geometry geometry;
+    /** The refined hit point. */
+    public double px, py, pz;
+    /** The unit geometric normal. */
+    public double nx, ny, nz;
+    /** The unit shading normal. */
+    public double snx, sny, snz;
+
+    private double errorX, errorY, errorZ;
+    /** The origin the last {@link #spawn} computed. */
+    public double originX, originY, originZ;
+
+    /** Two directions across the last direction given to {@link #basis}: where beams around it spread. */
+    public double e1x, e1y, e1z, e2x, e2y, e2z;
+
+    /** The average of a beam of rays leaving this point (glossy reflection, frosted refraction). */
+    final ColorAverage beamAverage = new ColorAverage();
+
+    /** An empty point, to be {@link #set} before use. */
+    public SurfacePoint() {}
 
     /** Copies a completed hit ({@link Geometry#completeHit} must have filled it). */
     public SurfacePoint(HitRecord hit) {
+        set(hit);
+    }
+
+    /** Copies a completed hit into this point. */
+    public SurfacePoint set(HitRecord hit) {
         geometry = hit.geometry;
-        point = hit.point;
-        normal = hit.normal;
-        shadingNormal = hit.shadingNormal;
+        px = hit.px;
+        py = hit.py;
+        pz = hit.pz;
+        nx = hit.nx;
+        ny = hit.ny;
+        nz = hit.nz;
+        snx = hit.snx;
+        sny = hit.sny;
+        snz = hit.snz;
         errorX = hit.errorX;
         errorY = hit.errorY;
         errorZ = hit.errorZ;
+        return this;
+    }
+
+    /** The point (allocates; the tracer reads the fields). */
+    public Point point() {
+        return new Point(px, py, pz);
+    }
+
+    /** The geometric normal (allocates). */
+    public Vector normal() {
+        return new Vector(nx, ny, nz);
+    }
+
+    /** The shading normal (allocates). */
+    public Vector shadingNormal() {
+        return new Vector(snx, sny, snz);
     }
 
     /** A ray leaving this point in {@code direction}, from the offset origin. */
-    public primitives.Ray spawnRay(Vector direction) {
-        return new primitives.Ray(spawnOrigin(direction.x, direction.y, direction.z), direction);
+    public Ray spawnRay(Vector direction) {
+        return new Ray(spawnOrigin(direction.x, direction.y, direction.z), direction);
     }
 
-    /** The origin of a ray leaving this point in direction (dx, dy, dz). */
+    /** The origin of a ray leaving this point in direction (dx, dy, dz) (allocates; see {@link #spawn}). */
     public Point spawnOrigin(double dx, double dy, double dz) {
-        double nx = normal.x, ny = normal.y, nz = normal.z;
+        spawn(dx, dy, dz);
+        return new Point(originX, originY, originZ);
+    }
+
+    /** Sets {@link #originX}, {@code originY}, {@code originZ} to the origin of a ray leaving in (dx, dy, dz). */
+    public void spawn(double dx, double dy, double dz) {
         double d = Math.abs(nx) * errorX + Math.abs(ny) * errorY + Math.abs(nz) * errorZ;
         if (nx * dx + ny * dy + nz * dz < 0) d = -d;
         double ox = d * nx, oy = d * ny, oz = d * nz;
-        return new Point(away(point.x + ox, ox), away(point.y + oy, oy), away(point.z + oz, oz));
+        originX = away(px + ox, ox);
+        originY = away(py + oy, oy);
+        originZ = away(pz + oz, oz);
+    }
+
+    /**
+     * Sets {@code e1} to {@code d.perpendicular()} and {@code e2} to {@code d.crossProduct(e1)} for the unit
+     * direction d = (x, y, z), with exactly the arithmetic of {@link Vector#perpendicular()} and
+     * {@link Vector#crossProduct} (Duff et al. 2017; cross products by {@link Util#differenceOfProducts}).
+     */
+    public void basis(double x, double y, double z) {
+        double sign = Math.copySign(1.0, z);
+        double a = -1.0 / (sign + z);
+        double b = x * y * a;
+        e1x = 1.0 + sign * x * x * a;
+        e1y = sign * b;
+        e1z = -sign * x;
+        e2x = Util.differenceOfProducts(y, e1z, z, e1y);
+        e2y = Util.differenceOfProducts(z, e1x, x, e1z);
+        e2z = Util.differenceOfProducts(x, e1y, y, e1x);
     }
 
     /** Rounds {@code value} one ulp further in the direction of {@code offset}. */

@@ -1,23 +1,47 @@
 package renderer;
 
 import geometries.HitRecord;
+import primitives.Color;
+import primitives.ReusableRay;
 import renderer.sampling.SampleStream;
 
 /**
- * Everything one render thread mutates while tracing: hit records, the random stream, a sample buffer and the
- * ray counters. Created once per thread and reused for every ray, so tracing allocates no per-ray scratch.
+ * Everything one render thread mutates while tracing: rays, hit records, shaded points, the random stream,
+ * sample buffers and the ray counters. Created once per thread and reused for every ray, so tracing allocates
+ * nothing per ray: the tracer hands colours back through {@link #red}, {@link #green} and {@link #blue} instead of
+ * returning objects.
  */
 public final class TraceContext {
     /** Record of closest-hit queries. */
     public final HitRecord hit = new HitRecord();
     /** Record of shadow queries (kept apart so shading data survives them). */
     public final HitRecord shadowHit = new HitRecord();
+    /** The ray of closest-hit queries: camera, reflection and refraction rays, set anew for each. */
+    public final ReusableRay ray = new ReusableRay();
+    /** The ray of shadow queries. */
+    public final ReusableRay shadowRay = new ReusableRay();
     /** Random numbers, re-seeded per pixel, light and bounce. */
     public final SampleStream random = new SampleStream();
     /** Counts of the rays this thread fired. */
     public final RayCounters counters = new RayCounters();
+
+    /** The colour the last trace produced (the tracer's return value). */
+    public double red, green, blue;
+
+    /** The transmittance toward the light being shaded (the visibility sampler's return value). */
+    double visibleR, visibleG, visibleB;
     /** Whether the last disk of shadow rays all had the same transmittance (set by the soft-shadow sampler). */
     boolean diskUniform;
+    /** Direct light, in display steps, the current camera sample may still leave out (the light cut-off). */
+    double cutoffBudget;
+
+    /** Averages of the beams over a pixel and over the lens (each kind nests inside the one before). */
+    final ColorAverage pixelAverage = new ColorAverage(), lensAverage = new ColorAverage();
+
+    /** The direct light at the point being shaded (sized for the scene's lights on first use). */
+    private DirectLighting direct = new DirectLighting(0);
+    /** One shaded point per recursion level (the levels active at once are distinct, see SimpleRayTracer). */
+    private SurfacePoint[] surfaces = new SurfacePoint[0];
 
     /** Sample buffers, one per kind of beam: beams of different kinds nest, beams of one kind never do. */
     private double[] pixelOffsets = new double[2 * 81];
@@ -25,6 +49,37 @@ public final class TraceContext {
     private double[] lensOffsets = new double[2 * 16];
     private double[] shadowOffsets = new double[2 * 81];
     private double[] glossyOffsets = new double[2 * 16];
+    /** The single offset of a rough bounce below the first (read before the bounce recurses). */
+    final double[] roughOffset = new double[2];
+    /** A direction handed back by a helper (refraction), copied by the caller at once. */
+    final double[] direction = new double[3];
+
+    /** The last traced colour as a {@link Color} (allocates; the render loop reads the fields). */
+    public Color color() {
+        return new Color(red, green, blue);
+    }
+
+    void setColor(double r, double g, double b) {
+        red = r;
+        green = g;
+        blue = b;
+    }
+
+    /** The reusable shaded point of recursion level {@code level}. */
+    SurfacePoint surface(int level) {
+        if (level >= surfaces.length) {
+            SurfacePoint[] grown = java.util.Arrays.copyOf(surfaces, Math.max(level + 1, 2 * surfaces.length));
+            for (int i = surfaces.length; i < grown.length; i++) grown[i] = new SurfacePoint();
+            surfaces = grown;
+        }
+        return surfaces[level];
+    }
+
+    /** The direct-light scratch for {@code lights} lights (made anew when the number of lights changes). */
+    DirectLighting direct(int lights) {
+        if (direct.lights() != lights) direct = new DirectLighting(lights);
+        return direct;
+    }
 
     /** Buffer for {@code count} offsets of anti-aliasing samples over a pixel. */
     public double[] pixelOffsets(int count) {

@@ -97,7 +97,7 @@ public final class AcneProbe {
             }
             SurfacePoint sp = new SurfacePoint(hit);
             Vector d = primary.getDirection();
-            Vector n = sp.normal;
+            Vector n = sp.normal();
             double dn = d.dotProduct(n);
             // The side the primary ray came from: spawned rays leave toward it.
             Vector outward = dn < 0 ? n : n.scale(-1);
@@ -117,8 +117,8 @@ public final class AcneProbe {
                 && Double.isFinite(hit.errorX)
                 && Double.isFinite(hit.errorY)
                 && Double.isFinite(hit.errorZ)
-                && hit.point != null
-                && hit.normal != null;
+                && Double.isFinite(hit.px + hit.py + hit.pz)
+                && Double.isFinite(hit.nx + hit.ny + hit.nz);
     }
 
     static Vector randomUnit(SplittableRandom random) {

@@ -79,7 +79,7 @@ public final class PrecisionProbe {
                 nonFinite++;
                 continue;
             }
-            double ulps = error.applyAsDouble(hit.point) / ulp;
+            double ulps = error.applyAsDouble(hit.point()) / ulp;
             max = Math.max(max, ulps);
             sum += ulps;
             hits++;

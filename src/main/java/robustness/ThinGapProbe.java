@@ -42,7 +42,7 @@ public final class ThinGapProbe {
             if (!innerOnly.intersect(primary, 0, Double.POSITIVE_INFINITY, hit)) continue;
             hit.geometry.completeHit(primary, hit);
             SurfacePoint sp = new SurfacePoint(hit);
-            Vector out = AcneProbe.randomInHemisphere(random, sp.normal);
+            Vector out = AcneProbe.randomInHemisphere(random, sp.normal());
             spawned++;
             hit.reset();
             if (!both.intersect(sp.spawnRay(out), 0, Double.POSITIVE_INFINITY, hit)) escaped++;

@@ -287,6 +287,37 @@ class AcceleratorTest {
     }
 
     @Test
+    void theOccluderCacheRemembersTheBlockerAndTestsItFirst() {
+        // Many small opaque triangles along the ray's way, one big one that blocks it.
+        Geometries scene = new Geometries();
+        for (int i = 0; i < 50; i++) {
+            scene.add(new Triangle(new Point(i, 3, 1), new Point(i + 0.5, 3, 1), new Point(i, 3.5, 1)));
+        }
+        Triangle blocker = new Triangle(new Point(-5, -5, 6), new Point(5, -5, 6), new Point(0, 5, 6));
+        scene.add(blocker);
+        Sphere glass = new Sphere(new Point(0, 0, 3), 1);
+        glass.setMaterial(new Material().setKt(0.5));
+        scene.add(glass);
+        for (boolean bvh : new boolean[] {true, false}) {
+            Accelerator acc = Accelerator.build(scene, bvh);
+            Ray up = Hits.ray(0.1, 0.1, 0, 0, 0, 1);
+            HitRecord shadow = new HitRecord();
+            assertFalse(acc.passesLight(up, 0, 10, shadow));
+            int slot = shadow.occluder;
+            assertTrue(slot >= 0, "the blocking triangle's slot is reported");
+            shadow.occluderHint = slot;
+            long before = shadow.primitiveTests;
+            assertFalse(acc.passesLight(up, 0, 10, shadow));
+            assertEquals(1, shadow.primitiveTests - before, "the hinted occluder alone settles the query");
+            assertEquals(slot, shadow.occluder);
+            // Short of the blocker: the hint misses, the glass sphere attenuates, nothing is reported.
+            assertTrue(acc.passesLight(up, 0, 5, shadow));
+            assertEquals(-1, shadow.occluder);
+            assertEquals(0.25, shadow.transmitR);
+        }
+    }
+
+    @Test
     void emptyAndUnboundedScenes() {
         Accelerator empty = Accelerator.build(new Geometries(), true);
         assertFalse(empty.intersect(Hits.ray(0, 0, 0, 1, 0, 0), 0, Double.POSITIVE_INFINITY, new HitRecord()));

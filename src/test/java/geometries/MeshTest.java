@@ -103,9 +103,9 @@ class MeshTest {
         assertTrue(octahedron.intersect(ray, 0, Double.POSITIVE_INFINITY, hit));
         assertSame(octahedron, hit.geometry);
         octahedron.completeHit(ray, hit);
-        assertEquals(0, hit.point.distance(new Point(0.2, 0.3, 0.5)), 1e-15);
-        assertVector(new Vector(s, s, s), hit.normal, "geometric");
-        assertVector(new Vector(s, s, s), hit.shadingNormal, "shading = geometric");
+        assertEquals(0, hit.point().distance(new Point(0.2, 0.3, 0.5)), 1e-15);
+        assertVector(new Vector(s, s, s), hit.normal(), "geometric");
+        assertVector(new Vector(s, s, s), hit.shadingNormal(), "shading = geometric");
     }
 
     @Test
@@ -119,13 +119,13 @@ class MeshTest {
         assertTrue(smooth.intersect(ray, 0, Double.POSITIVE_INFINITY, hit));
         smooth.completeHit(ray, hit);
         // barycentrics (0.25, 0.25, 0.5): 0.25 (0,0,1) + 0.25 (1,0,1) + 0.5 (0,1,1) = (0.25, 0.5, 1)
-        assertVector(new Vector(0.25, 0.5, 1).normalize(), hit.shadingNormal, "interpolated");
-        assertVector(Vector.AXIS_Z, hit.normal, "geometric");
+        assertVector(new Vector(0.25, 0.5, 1).normalize(), hit.shadingNormal(), "interpolated");
+        assertVector(Vector.AXIS_Z, hit.normal(), "geometric");
         // flipped vertex normals flip the geometric normal too
         Mesh flipped = new Mesh(v, new int[] {0, 1, 2}, new double[] {0, 0, -1, 0, 0, -1, 0, 0, -1});
         assertTrue(flipped.intersect(ray, 0, Double.POSITIVE_INFINITY, hit.reset()));
         flipped.completeHit(ray, hit);
-        assertVector(new Vector(0, 0, -1), hit.normal, "flipped geometric");
+        assertVector(new Vector(0, 0, -1), hit.normal(), "flipped geometric");
     }
 
     @Test

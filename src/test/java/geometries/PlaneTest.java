@@ -132,8 +132,8 @@ class PlaneTest {
         assertTrue(!floor.intersect(down, 5, 10, hit.reset()));
         assertTrue(floor.intersect(down, 4.999, 5.001, hit.reset()));
         floor.completeHit(down, hit);
-        assertEquals(new Point(1, 1, -2), hit.point);
-        assertEquals(Vector.AXIS_Z, hit.normal);
+        assertEquals(new Point(1, 1, -2), hit.point());
+        assertEquals(Vector.AXIS_Z, hit.normal());
     }
 
     @Test

@@ -245,8 +245,8 @@ class PolygonTest {
         assertTrue(quad.intersect(ray, 0, Double.POSITIVE_INFINITY, hit));
         quad.completeHit(ray, hit);
         assertEquals(1, hit.part, "the second fan triangle");
-        assertEquals(0, hit.point.distance(new Point(-0.25, 0.5, 0.75)), 1e-15);
-        assertVector(new Vector(S, S, S), hit.normal, "normal");
+        assertEquals(0, hit.point().distance(new Point(-0.25, 0.5, 0.75)), 1e-15);
+        assertVector(new Vector(S, S, S), hit.normal(), "normal");
     }
 
     static Stream<Arguments> seeds() {

@@ -166,12 +166,12 @@ class SphereTest {
         sphere.completeHit(ray, hit);
         // entry point: x = 1 - sqrt(0.75)
         Point expected = new Point(1 - Math.sqrt(0.75), 0.5, 0);
-        assertEquals(0, hit.point.distance(expected), 1e-15);
-        assertVector(new Vector(-Math.sqrt(0.75), 0.5, 0), hit.normal, "outward normal");
-        assertEquals(hit.normal, hit.shadingNormal);
+        assertEquals(0, hit.point().distance(expected), 1e-15);
+        assertVector(new Vector(-Math.sqrt(0.75), 0.5, 0), hit.normal(), "outward normal");
+        assertEquals(hit.normal(), hit.shadingNormal());
         // the error bound is positive but tiny at unit scale
         assertTrue(hit.errorX > 0 && hit.errorX < 1e-14, "errorX " + hit.errorX);
-        assertEquals(1, hit.point.distance(sphere.getCenter()), 1e-15);
+        assertEquals(1, hit.point().distance(sphere.getCenter()), 1e-15);
     }
 
     @Test
@@ -291,9 +291,9 @@ class SphereTest {
             Ray probe = new Ray(s.getCenter().add(n.scale(10)), n.scale(-1));
             assertTrue(s.intersect(probe, 0, Double.POSITIVE_INFINITY, hit));
             s.completeHit(probe, hit);
-            Point p = hit.point;
+            Point p = hit.point();
             Vector d = SurfaceStartProperty.randomUnit(random);
-            double cos = d.dotProduct(hit.normal);
+            double cos = d.dotProduct(hit.normal());
             if (Math.abs(cos) < 1e-3) continue; // grazing directions are not part of this property
             List<Point> points = s.findIntersections(new Ray(p, d)).stream()
                     .filter(q -> q.distance(p) > 1e-9)

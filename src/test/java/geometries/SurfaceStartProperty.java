@@ -40,9 +40,9 @@ final class SurfaceStartProperty {
             if (!geometry.intersect(probe, 0, Double.POSITIVE_INFINITY, hit)) continue;
             geometry.completeHit(probe, hit);
             Vector out = randomUnit(random);
-            double cos = out.dotProduct(hit.normal);
+            double cos = out.dotProduct(hit.normal());
             if (Math.abs(cos) < 1e-3) continue; // grazing: not this property
-            Point start = hit.point;
+            Point start = hit.point();
             List<Point> beyond = geometry.findIntersections(new Ray(start, out)).stream()
                     .filter(p -> p.distance(start) > rounding)
                     .toList();

@@ -174,8 +174,8 @@ class TriangleTest {
         assertTrue(!triangle.intersect(up, 0, 1.4, new HitRecord()));
         assertTrue(!triangle.intersect(up, 1.6, 10, new HitRecord()));
         triangle.completeHit(up, hit);
-        assertEquals(0, hit.point.distance(new Point(0.2, 0.3, 0.5)), 1e-15);
-        assertVector(new Vector(S, S, S), hit.normal, "hit normal");
+        assertEquals(0, hit.point().distance(new Point(0.2, 0.3, 0.5)), 1e-15);
+        assertVector(new Vector(S, S, S), hit.normal(), "hit normal");
         assertTrue(hit.errorX >= 0 && hit.errorX < 1e-14);
     }
 

@@ -144,8 +144,8 @@ class TubeTest {
         HitRecord hit = new HitRecord();
         assertTrue(tube.intersect(r, 0, Double.POSITIVE_INFINITY, hit));
         tube.completeHit(r, hit);
-        assertEquals(0, hit.point.distance(new Point(-0.8, 0.6, 4)), 1e-15);
-        assertVector(new Vector(-0.8, 0.6, 0), hit.normal, "outward normal");
+        assertEquals(0, hit.point().distance(new Point(-0.8, 0.6, 4)), 1e-15);
+        assertVector(new Vector(-0.8, 0.6, 0), hit.normal(), "outward normal");
     }
 
     static Stream<Arguments> seeds() {

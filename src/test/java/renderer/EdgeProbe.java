@@ -56,11 +56,11 @@ final class EdgeProbe {
         hit.geometry.completeHit(ray, hit);
         SurfacePoint sp = new SurfacePoint(hit);
         signature.add(System.identityHashCode(sp.geometry) + "/" + hit.part);
-        Vector v = ray.getDirection(), n = sp.shadingNormal;
+        Vector v = ray.getDirection(), n = sp.shadingNormal();
         double nv = n.dotProduct(v);
         for (LightSource light : scene.lights) {
             // As the tracer does: a light on the other side of the surface from the viewer is not looked for.
-            boolean facing = n.dotProduct(light.getL(sp.point)) * nv > 0;
+            boolean facing = n.dotProduct(light.getL(sp.point())) * nv > 0;
             signature.add(facing ? visibility(sp, light) : "behind");
         }
         if (level <= 1 || nv == 0) return;
@@ -78,7 +78,7 @@ final class EdgeProbe {
 
     /** Transmittance of the hard shadow ray toward the light (its centre, or along a directional light). */
     private Double3 visibility(SurfacePoint sp, LightSource light) {
-        Point p = sp.point, c = light.getPosition();
+        Point p = sp.point(), c = light.getPosition();
         if (c == null) {
             Vector l = light.getL(p);
             Point origin = sp.spawnOrigin(-l.x, -l.y, -l.z);

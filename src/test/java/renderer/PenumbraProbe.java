@@ -58,7 +58,7 @@ final class PenumbraProbe {
         }
         if (level <= 1) return false;
         Material m = sp.geometry.getMaterial();
-        Vector v = ray.getDirection(), n = sp.shadingNormal;
+        Vector v = ray.getDirection(), n = sp.shadingNormal();
         double nv = n.dotProduct(v);
         if (nv == 0) return false;
         Double3 kr = k.product(m.getKr()), kt = k.product(m.getKt());
@@ -76,7 +76,7 @@ final class PenumbraProbe {
     /** Whether shadow rays from the point to the centre and rings of the light's disk disagree. */
     private boolean mixed(SurfacePoint sp, LightSource light, int rings, int perRing) {
         Point c = light.getPosition();
-        Vector l = light.getL(sp.point);
+        Vector l = light.getL(sp.point());
         Vector e1 = l.perpendicular(), e2 = l.crossProduct(e1);
         Double3 first = transmittance(sp, c.x, c.y, c.z);
         for (int ring = 1; ring <= rings; ring++) {
@@ -94,7 +94,7 @@ final class PenumbraProbe {
     }
 
     private Double3 transmittance(SurfacePoint sp, double x, double y, double z) {
-        Point p = sp.point;
+        Point p = sp.point();
         Point origin = sp.spawnOrigin(x - p.x, y - p.y, z - p.z);
         Vector d = new Vector(x - origin.x, y - origin.y, z - origin.z);
         return accelerator.transmittance(new Ray(origin, d), 0, d.length(), shadowHit);

@@ -81,7 +81,7 @@ class SpawnedRayTest {
                 hit.geometry.completeHit(probe, hit);
                 SurfacePoint sp = new SurfacePoint(hit);
                 Vector d = randomUnit(random);
-                double cos = d.dotProduct(hit.normal);
+                double cos = d.dotProduct(hit.normal());
                 Ray spawned = new Ray(sp.spawnOrigin(d.x, d.y, d.z), d);
                 HitRecord again = new HitRecord();
                 boolean found = compiled.intersect(spawned, 0, Double.POSITIVE_INFINITY, again);
@@ -97,7 +97,7 @@ class SpawnedRayTest {
                 if (!ok) {
                     failures++;
                     if (firstFailure == null) {
-                        firstFailure = "from " + hit.point + " along " + d + " (cos " + cos + "): "
+                        firstFailure = "from " + hit.point() + " along " + d + " (cos " + cos + "): "
                                 + (found ? "hit at t=" + again.t : "no hit");
                     }
                 }

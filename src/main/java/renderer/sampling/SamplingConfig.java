@@ -1,6 +1,7 @@
 package renderer.sampling;
 
 import java.util.Objects;
+import primitives.Limits;
 
 /**
  * How many samples to take over which target shape with which pattern, e.g.
@@ -22,11 +23,9 @@ public final class SamplingConfig {
     }
 
     private SamplingConfig(int sampleCount, TargetShape shape, SamplingPattern pattern, double adaptiveThreshold) {
-        if (sampleCount < 1) {
-            throw new IllegalArgumentException("sampleCount must be >= 1, but was " + sampleCount);
-        }
-        if (sampleCount > 1 << 20) {
-            throw new IllegalArgumentException("sampleCount must be <= " + (1 << 20) + ", but was " + sampleCount);
+        if (sampleCount < 1 || sampleCount > Limits.MAX_SAMPLES) {
+            throw new IllegalArgumentException(
+                    "sampleCount must be in [1, " + Limits.MAX_SAMPLES + "], but was " + sampleCount);
         }
         this.sampleCount = sampleCount;
         this.shape = Objects.requireNonNull(shape, "shape must not be null");
