@@ -6,18 +6,25 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code raytracer benchmark bvh|planning|effects [args]}: the benchmarks, each printing a Markdown table.
+ * {@code raytracer benchmark bvh|planning|render|effects [args]}: the benchmarks, each printing a Markdown table.
  * {@code bvh} takes {@code runs=N threads=1,2 only=workload,...} (see docs/BENCHMARKS.md; it wants a large heap,
- * so {@code mvn -Pbenchmark} runs it in a JVM of its own); {@code planning} takes the number of runs;
+ * so {@code mvn -Pbenchmark} runs it in a JVM of its own); {@code planning} takes the number of runs; {@code render}
+ * takes {@code --runs N --threads 1,2 --only NAME --csv FILE --images DIR --baseline FILE --light-cutoff STEPS};
  * {@code effects} takes runs, width and height.
  */
 @Command(
         name = "benchmark",
         mixinStandardHelpOptions = true,
+        subcommands = RenderBenchmarkCommand.class,
         description = "Runs a benchmark: bvh (BVH on/off, threads), planning (effect planning on/off), "
+                + "render (real renders: time, rays, allocation; --baseline FILE compares), "
                 + "effects (time factor of each sampled effect).")
 public final class BenchmarkCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "bvh|planning|effects", description = "which benchmark")
+    @Parameters(
+            index = "0",
+            arity = "0..1",
+            paramLabel = "bvh|planning|effects",
+            description = "which benchmark (render is a subcommand with options of its own)")
     private String which;
 
     @Parameters(index = "1..*", paramLabel = "args", description = "arguments of that benchmark")
@@ -25,6 +32,9 @@ public final class BenchmarkCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws BadInputException {
+        if (which == null) {
+            throw new BadInputException("benchmark: which benchmark? allowed: bvh, planning, render, effects");
+        }
         String[] rest = args.toArray(new String[0]);
         try {
             switch (which) {
@@ -33,7 +43,7 @@ public final class BenchmarkCommand implements Callable<Integer> {
                 case "effects" -> app.FeatureGallery.main(rest);
                 default ->
                     throw new BadInputException(
-                            "benchmark: unknown benchmark '" + which + "'; allowed: bvh, planning, effects");
+                            "benchmark: unknown benchmark '" + which + "'; allowed: bvh, planning, render, effects");
             }
         } catch (NumberFormatException e) {
             throw new BadInputException("benchmark " + which + ": " + e.getMessage() + " is not a number");

@@ -41,6 +41,13 @@ public final class RenderOverrides implements Serializable {
             description = "image height; alone, the width follows the scene's aspect ratio")
     private Integer height;
 
+    @Option(
+            names = "--light-cutoff",
+            paramLabel = "STEPS",
+            description = "display steps of direct light a camera sample may leave out by not sampling lights too"
+                    + " faint to matter, 0 (exact) to 255 (default: the scene's, else 0.5)")
+    private Double lightCutoff;
+
     /** No overrides: the scene file's settings (picocli fills the options of a mixin it creates this way). */
     public RenderOverrides() {}
 
@@ -62,6 +69,9 @@ public final class RenderOverrides implements Serializable {
         }
         checkPositive("--width", width);
         checkPositive("--height", height);
+        if (lightCutoff != null && !(lightCutoff >= 0 && lightCutoff <= 255)) {
+            throw new BadInputException("--light-cutoff must be in [0, 255] display steps, but was " + lightCutoff);
+        }
     }
 
     static void checkPositive(String option, Integer value) throws BadInputException {
@@ -78,6 +88,7 @@ public final class RenderOverrides implements Serializable {
         RenderDocument r = d.render();
         if (r == null) return d; // the loader reports the missing section
         if (bvh != null) r = r.withBvh(bvh == Switch.ON);
+        if (lightCutoff != null) r = r.withLightCutoff(lightCutoff);
         if (samples != null) {
             SamplingDocument aa = r.antiAliasing();
             r = r.withAntiAliasing(

@@ -437,17 +437,10 @@ public final class Accelerator implements Intersectable {
      * surfaces do not block but are collected in the scratch record.
      */
     private boolean anyHit(Ray ray, double tMin, double tMax, HitRecord scratch, boolean honourTransparency) {
-        long tests = 0;
         scratch.occluder = -1;
+        if (blockedByHint(ray, tMin, tMax, scratch)) return true;
+        long tests = 0;
         try {
-            int hint = scratch.occluderHint;
-            if (hint >= 0 && hint < boundedCount && !mayTransmit[hint]) {
-                tests++;
-                if (blocks(hint, false, ray, tMin, tMax, scratch)) {
-                    scratch.occluder = hint;
-                    return true;
-                }
-            }
             for (int j = 0; j < unbounded.length; j++) {
                 tests++;
                 boolean pass = honourTransparency && unboundedMayTransmit[j];
@@ -513,6 +506,19 @@ public final class Accelerator implements Intersectable {
         } finally {
             scratch.primitiveTests += tests;
         }
+    }
+
+    /**
+     * The occluder cache: whether the opaque primitive in slot {@code scratch.occluderHint} blocks the segment.
+     * (Its own method, so that the traversal loop stays small enough for the JIT to inline the box test.)
+     */
+    private boolean blockedByHint(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        int hint = scratch.occluderHint;
+        if (hint < 0 || hint >= boundedCount || mayTransmit[hint]) return false;
+        scratch.primitiveTests++;
+        if (!blocks(hint, false, ray, tMin, tMax, scratch)) return false;
+        scratch.occluder = hint;
+        return true;
     }
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */

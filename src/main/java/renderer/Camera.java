@@ -231,7 +231,7 @@ public final class Camera implements Cloneable {
     /** Where rendered pixels go, in image coordinates; called from the render threads, for distinct pixels. */
     @FunctionalInterface
     private interface PixelSink {
-        void write(int x, int y, Color color);
+        void write(int x, int y, double red, double green, double blue);
     }
 
     /** Renders a rectangle of the image in 16 x 16 tiles on the render threads into {@code sink}. */
@@ -259,7 +259,8 @@ public final class Camera implements Cloneable {
                         int tx = x0 + (t % tilesX) * TILE, ty = y0 + (t / tilesX) * TILE;
                         for (int y = ty; y < Math.min(ty + TILE, yEnd); y++) {
                             for (int x = tx; x < Math.min(tx + TILE, xEnd); x++) {
-                                sink.write(x, y, pixels.render(x, y, ctx));
+                                pixels.render(x, y, ctx);
+                                sink.write(x, y, ctx.red, ctx.green, ctx.blue);
                             }
                         }
                         int finished = done.incrementAndGet();
@@ -337,16 +338,21 @@ public final class Camera implements Cloneable {
 
         private final int adaptiveDepth = adaptiveDepth(antiAliasing);
 
-        Color render(int x, int y, TraceContext ctx) {
+        /** Renders pixel (x, y) into {@code ctx.red, green, blue}. */
+        void render(int x, int y, TraceContext ctx) {
             long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
             double u = (x - (nX - 1) / 2.0) * pixelWidth;
             double v = -(y - (nY - 1) / 2.0) * pixelHeight;
             int count = antiAliasing.getSampleCount();
             if (count == 1) {
                 sample(u, v, pixelSeed, ctx);
-                return ctx.color();
+                return;
             }
-            if (antiAliasing.isAdaptive() && adaptiveDepth > 0) return adaptive(u, v, pixelSeed, ctx);
+            if (antiAliasing.isAdaptive() && adaptiveDepth > 0) {
+                Color c = adaptive(u, v, pixelSeed, ctx);
+                ctx.setColor(c.getR(), c.getG(), c.getB());
+                return;
+            }
             double[] offsets = gridOffsets;
             if (offsets == null) {
                 offsets = ctx.pixelOffsets(count);
@@ -366,7 +372,7 @@ public final class Camera implements Cloneable {
                         ctx);
                 average.add(ctx);
             }
-            return average.mean();
+            average.meanInto(ctx);
         }
 
         /**

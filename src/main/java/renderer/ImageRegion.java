@@ -52,14 +52,15 @@ public final class ImageRegion implements Serializable {
     }
 
     /** Sets pixel (x, y) of the image, which must lie in this region. */
-    void writePixel(int x, int y, Color color) {
+    void writePixel(int x, int y, double red, double green, double blue) {
         int o = offset(x, y);
-        if (Double.isNaN(color.getR()) || Double.isNaN(color.getG()) || Double.isNaN(color.getB())) {
-            throw new IllegalArgumentException("pixel (" + x + ", " + y + ") colour is NaN: " + color);
+        if (Double.isNaN(red) || Double.isNaN(green) || Double.isNaN(blue)) {
+            throw new IllegalArgumentException(
+                    "pixel (" + x + ", " + y + ") colour is NaN: rgb(" + red + "," + green + "," + blue + ")");
         }
-        pixels[o] = color.getR();
-        pixels[o + 1] = color.getG();
-        pixels[o + 2] = color.getB();
+        pixels[o] = red;
+        pixels[o + 1] = green;
+        pixels[o + 2] = blue;
     }
 
     /** The linear colour of pixel (x, y) of the image, which must lie in this region. */

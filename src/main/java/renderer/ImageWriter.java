@@ -63,14 +63,20 @@ public class ImageWriter {
 
     /** Sets pixel (x, y), x to the right and y downward from the top-left corner. */
     public void writePixel(int xIndex, int yIndex, Color color) {
+        writePixel(xIndex, yIndex, color.getR(), color.getG(), color.getB());
+    }
+
+    /** Sets pixel (x, y) to the linear colour (red, green, blue). */
+    public void writePixel(int xIndex, int yIndex, double red, double green, double blue) {
         checkIndex(xIndex, yIndex);
-        if (Double.isNaN(color.getR()) || Double.isNaN(color.getG()) || Double.isNaN(color.getB())) {
-            throw new IllegalArgumentException("pixel (" + xIndex + ", " + yIndex + ") colour is NaN: " + color);
+        if (Double.isNaN(red) || Double.isNaN(green) || Double.isNaN(blue)) {
+            throw new IllegalArgumentException("pixel (" + xIndex + ", " + yIndex + ") colour is NaN: rgb(" + red + ","
+                    + green + "," + blue + ")");
         }
         int o = 3 * (yIndex * nX + xIndex);
-        pixels[o] = color.getR();
-        pixels[o + 1] = color.getG();
-        pixels[o + 2] = color.getB();
+        pixels[o] = red;
+        pixels[o + 1] = green;
+        pixels[o + 2] = blue;
     }
 
     /**

@@ -213,6 +213,10 @@ final class SceneBuilder {
                             RenderSettings.DEFAULT.glossySampling().getPattern()));
             settings = settings.withGlossySampling(glossy);
         }
+        if (r.lightCutoff() != null) {
+            RenderSettings s = settings;
+            settings = core(rp.field("lightCutoff"), () -> s.withLightCutoff(r.lightCutoff()));
+        }
         b.setRenderSettings(settings);
         b.setRayTracer(scene, RayTracerType.SIMPLE);
         return core(at, b::build);

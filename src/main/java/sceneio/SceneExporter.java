@@ -236,7 +236,8 @@ public final class SceneExporter {
                 s.adaptiveShadows() ? true : null,
                 s.glossySampling().getSampleCount() == d.glossySampling().getSampleCount()
                         ? null
-                        : s.glossySampling().getSampleCount());
+                        : s.glossySampling().getSampleCount(),
+                s.lightCutoff() == d.lightCutoff() ? null : s.lightCutoff());
     }
 
     private static List<Vec3> vertices(Polygon p) {

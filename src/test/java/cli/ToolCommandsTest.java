@@ -21,7 +21,19 @@ class ToolCommandsTest {
     @Test
     void unknownBenchmarkIsBadInputNamingTheAllowedOnes() {
         assertEquals(ExitCodes.BAD_INPUT, run("benchmark", "nope"));
-        assertTrue(err.toString().contains("allowed: bvh, planning, effects"), err.toString());
+        assertTrue(err.toString().contains("allowed: bvh, planning, render, effects"), err.toString());
+    }
+
+    @Test
+    void renderBenchmarkRejectsUnknownScenesAndMissingBaselines() {
+        assertEquals(ExitCodes.BAD_INPUT, run("benchmark", "render", "--only", "nope"));
+        assertTrue(
+                err.toString()
+                        .contains("--only: unknown scene 'nope'; allowed: street-hard, street-main, showcase,"
+                                + " glass-and-mirror"),
+                err.toString());
+        assertEquals(ExitCodes.BAD_INPUT, run("benchmark", "render", "--baseline", "no-such.csv"));
+        assertTrue(err.toString().contains("--baseline no-such.csv: no such file"), err.toString());
     }
 
     @Test

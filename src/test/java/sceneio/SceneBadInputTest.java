@@ -66,7 +66,7 @@ class SceneBadInputTest {
     void unknownFieldsListWhatIsAllowed() {
         assertMessage(
                 "bad.json:4:14: $.render.widht: unknown field \"widht\"; allowed fields here: adaptiveShadows,"
-                        + " antiAliasing, bvh, glossySamples, height, maxLevel, shadowPattern, threads, width",
+                        + " antiAliasing, bvh, glossySamples, height, lightCutoff, maxLevel, shadowPattern, threads, width",
                 error(VALID.replace("\"width\": 4", "\"widht\": 4")));
         assertMessage(
                 "bad.json:6:5: $.geometries[0]: unknown geometry type \"sphear\"; allowed: sphere, plane, triangle,"
@@ -182,6 +182,24 @@ class SceneBadInputTest {
                 "bad.json:1:1: $: the scene has no camera: add \"camera\": {\"location\": [x, y, z], \"lookAt\":"
                         + " [x, y, z], \"vpDistance\": d, \"vpWidth\": w, \"vpHeight\": h}",
                 e);
+    }
+
+    @Test
+    void everySampleCountIsBoundedWithTheSameMessage() {
+        String light = "\"lights\": [{\"type\": \"point\", \"color\": [1, 1, 1], \"position\": [0, 0, 5],"
+                + " \"radius\": 1, \"samples\": 1000000000}],\n  \"geometries\"";
+        assertTrue(error(VALID.replace("\"geometries\"", light))
+                .getMessage()
+                .endsWith("$.lights[0].samples: light numSamples must be in [1, 1048576], but was 1000000000"));
+        assertTrue(error(VALID.replace("\"height\": 4}", "\"height\": 4, \"antiAliasing\": {\"samples\": 2000000}}"))
+                .getMessage()
+                .endsWith("$.render.antiAliasing.samples: sampleCount must be in [1, 1048576], but was 2000000"));
+        assertTrue(error(VALID.replace("\"height\": 4}", "\"height\": 4, \"glossySamples\": 2000000}"))
+                .getMessage()
+                .endsWith("$.render.glossySamples: sampleCount must be in [1, 1048576], but was 2000000"));
+        assertTrue(error(VALID.replace("\"height\": 4}", "\"height\": 4, \"lightCutoff\": -1}"))
+                .getMessage()
+                .endsWith("$.render.lightCutoff: lightCutoff must be in [0, 255] display steps, but was -1.0"));
     }
 
     @Test

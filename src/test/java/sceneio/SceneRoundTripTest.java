@@ -83,7 +83,8 @@ class SceneRoundTripTest {
                         null,
                         null,
                         null,
-                        null),
+                        null,
+                        0.25),
                 Map.of("m", new MaterialDocument(Coefficient.of(awkward), null, null, 3, null, null, null, null)),
                 List.of(),
                 List.of(

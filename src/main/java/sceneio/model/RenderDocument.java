@@ -15,6 +15,8 @@ import renderer.sampling.SamplingPattern;
  * @param shadowPattern placement of shadow rays on a light's disk (default jittered)
  * @param adaptiveShadows probe a few shadow rays first (default false)
  * @param glossySamples rays per glossy reflection or frosted refraction (default 16)
+ * @param lightCutoff display steps of direct light a camera sample may leave out by not sampling lights too faint
+ *     to matter, 0 (exact) to 255 (default 0.5: at most one step in the 8-bit image)
  */
 @JsonPropertyOrder({
     "width",
@@ -25,7 +27,8 @@ import renderer.sampling.SamplingPattern;
     "maxLevel",
     "shadowPattern",
     "adaptiveShadows",
-    "glossySamples"
+    "glossySamples",
+    "lightCutoff"
 })
 public record RenderDocument(
         Integer width,
@@ -36,25 +39,76 @@ public record RenderDocument(
         Integer maxLevel,
         SamplingPattern shadowPattern,
         Boolean adaptiveShadows,
-        Integer glossySamples) {
+        Integer glossySamples,
+        Double lightCutoff) {
 
     public RenderDocument withSize(Integer width, Integer height) {
         return new RenderDocument(
-                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff);
     }
 
     public RenderDocument withAntiAliasing(SamplingDocument antiAliasing) {
         return new RenderDocument(
-                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff);
     }
 
     public RenderDocument withThreads(Integer threads) {
         return new RenderDocument(
-                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff);
     }
 
     public RenderDocument withBvh(Boolean bvh) {
         return new RenderDocument(
-                width, height, antiAliasing, threads, bvh, maxLevel, shadowPattern, adaptiveShadows, glossySamples);
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff);
+    }
+
+    public RenderDocument withLightCutoff(Double lightCutoff) {
+        return new RenderDocument(
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff);
     }
 }

@@ -1,0 +1,92 @@
+package renderer;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import geometries.Plane;
+import geometries.Polygon;
+import geometries.Sphere;
+import java.lang.management.ManagementFactory;
+import lighting.AmbientLight;
+import lighting.DirectionalLight;
+import lighting.PointLight;
+import lighting.SpotLight;
+import org.junit.jupiter.api.Test;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point;
+import primitives.Vector;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.TargetShape;
+import scene.Scene;
+
+/**
+ * The render loop allocates (next to) nothing per ray: on one thread the camera renders on the calling thread, so
+ * the bytes that thread allocates during a render, over the rays it fired, bound the allocation per ray. What is
+ * left is per render (the image, the thread's context), not per ray or per pixel. Measured after two warm-up
+ * renders, since code the JIT has not compiled yet may allocate where compiled code does not.
+ */
+class TracerAllocationTest {
+    /** Far below the 100 to 400 bytes per ray of the tracer that allocated a ray, points and colours per ray. */
+    private static final double MOST_BYTES_PER_RAY = 2;
+
+    @Test
+    void aRenderWithEveryEffectAllocatesNearlyNothingPerRay() {
+        var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        assumeTrue(threads.isCurrentThreadCpuTimeSupported() && threads.isThreadAllocatedMemorySupported());
+        threads.setThreadAllocatedMemoryEnabled(true);
+        // The vectorized box test of the 4-wide BVH still boxes vectors where the JIT does not inline it (about 64
+        // bytes per ray); the tracer itself is measured on the scalar kernel until the 8-wide kernel replaces it.
+        assumeTrue(
+                ModuleLayer.boot().findModule("jdk.incubator.vector").isEmpty(),
+                "measured on the scalar kernel (the surefire execution without the Vector API module)");
+        Camera camera = camera();
+        camera.renderImage();
+        camera.renderImage();
+        long before = threads.getCurrentThreadAllocatedBytes();
+        camera.renderImage();
+        long bytes = threads.getCurrentThreadAllocatedBytes() - before;
+        long rays = camera.getLastStatistics().rays().total();
+        double perRay = bytes / (double) rays;
+        assertTrue(perRay < MOST_BYTES_PER_RAY, bytes + " bytes for " + rays + " rays: " + perRay + " bytes per ray");
+    }
+
+    /** Soft and hard shadows, glass, a mirror and a glossy floor, anti-aliasing and depth of field: every path. */
+    private static Camera camera() {
+        Scene scene = new Scene("every effect").setAmbientLight(new AmbientLight(new Color(20, 20, 25)));
+        scene.geometries.add(
+                new Plane(Point.ZERO, Vector.AXIS_Z)
+                        .setMaterial(new Material().setKd(0.5).setKr(0.3).setRoughness(0.05)),
+                new Sphere(new Point(-20, 0, 12), 12)
+                        .setMaterial(new Material()
+                                .setKd(0.05)
+                                .setKs(0.5)
+                                .setShininess(200)
+                                .setKt(0.8)
+                                .setIndexOfRefraction(1.5)),
+                new Sphere(new Point(15, 10, 10), 10)
+                        .setMaterial(new Material().setKd(0.6).setKs(0.3).setShininess(40)),
+                new Polygon(new Point(-60, 50, 0), new Point(60, 50, 0), new Point(60, 50, 50), new Point(-60, 50, 50))
+                        .setMaterial(new Material().setKd(0.1).setKr(0.7)));
+        scene.lights.add(new PointLight(new Color(400, 380, 350), new Point(30, -40, 70))
+                .setKq(0.0001)
+                .setRadius(5)
+                .setNumSamples(9));
+        scene.lights.add(new SpotLight(new Color(200, 200, 250), new Point(-40, -30, 60), new Vector(1, 1, -2)));
+        scene.lights.add(new DirectionalLight(new Color(40, 40, 50), new Vector(1, 2, -3)));
+        return Camera.getBuilder()
+                .setLocation(new Point(0, -120, 40))
+                .setDirection(new Point(0, 0, 10), Vector.AXIS_Z)
+                .setVpDistance(100)
+                .setVpSize(80, 60)
+                .setResolution(64, 48)
+                .setThreads(1)
+                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.JITTERED))
+                .setDepthOfField(120, 0.5)
+                .setApertureSampling(new SamplingConfig(4, TargetShape.CIRCLE, SamplingPattern.JITTERED))
+                .setRenderSettings(RenderSettings.DEFAULT.withShadowSampling(SamplingPattern.JITTERED, true))
+                .setRayTracer(scene, RayTracerType.SIMPLE)
+                .build();
+    }
+}
