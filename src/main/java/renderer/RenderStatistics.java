@@ -61,6 +61,14 @@ public record RenderStatistics(
                 primitiveTests,
                 primitiveTests / (double) queries,
                 rays.samplesSaved));
+        if (rays.lightsCutOff > 0) {
+            s.append(String.format(
+                    Locale.ROOT,
+                    "cut-off: %,d lights too faint to matter at a shading point were not sampled (%,d shadow rays"
+                            + " saved at the least)%n",
+                    rays.lightsCutOff,
+                    rays.shadowRaysCutOff));
+        }
         if (!plan.isEmpty()) s.append(plan).append(System.lineSeparator());
         return s.toString();
     }

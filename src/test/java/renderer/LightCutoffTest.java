@@ -63,6 +63,15 @@ class LightCutoffTest {
                 "hard lights: the shadow rays saved are exactly the rays not fired");
         assertWithinCutoff("many dim lights", exact, cut);
         assertTrue(
+                cut.getLastStatistics()
+                        .format()
+                        .contains(String.format(
+                                java.util.Locale.ROOT,
+                                "cut-off: %,d lights too faint to matter at a shading point were not sampled (%,d shadow rays",
+                                rays.lightsCutOff,
+                                rays.shadowRaysCutOff)),
+                cut.getLastStatistics().format());
+        assertTrue(
                 cut.getLastStatistics().plan().contains("light cut-off"),
                 cut.getLastStatistics().plan());
     }
