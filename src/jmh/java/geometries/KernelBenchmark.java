@@ -30,10 +30,11 @@ public class KernelBenchmark {
     Accelerator heightfield;
     Ray[] coherent;
     Ray[] incoherent;
-    /** The root node with its four child boxes, as the traversal sees them. */
+    /** The root node with its child boxes, as the traversal sees them. */
     float[] boxes;
 
-    double[] entries = new double[BVH.WIDTH];
+    float[] entries = new float[BVH.WIDTH];
+    RaySlabs slabs = new RaySlabs();
     /** One triangle (9 doubles) that about half of the incoherent rays from above hit. */
     double[] triangle = {-1, -1, 0, 1, -1, 0.1, 0, 1, -0.1};
 
@@ -53,26 +54,27 @@ public class KernelBenchmark {
         boxes = java.util.Arrays.copyOf(heightfield.getBvh().nodes, BVH.NODE_STRIDE);
     }
 
-    /** The four child boxes of the root node, with the kernel this JVM selected (per box tested). */
+    /** The child boxes of the root node, with the kernel this JVM selected (per box tested). */
     @Benchmark
     @OperationsPerInvocation(BVH.WIDTH * RAYS)
     public int slabTest() {
         int hits = 0;
         for (Ray ray : incoherent) {
-            int signs = BoundingBox.directionSigns(ray);
-            hits += Integer.bitCount(WideBoxTest.SELECTED.test(boxes, 0, ray, signs, 0, BoundingBox.MISS, entries));
+            slabs.set(ray);
+            hits += Integer.bitCount(WideBoxTest.SELECTED.test(boxes, 0, slabs, 0, WideBoxTest.MISS, entries));
         }
         return hits;
     }
 
-    /** The same boxes through the NaN-tolerant comparison path that rays with a zero direction component take. */
+    /** The same boxes through the double path that rays with a zero direction component take. */
     @Benchmark
     @OperationsPerInvocation(BVH.WIDTH * RAYS)
     public int slabTestComparisons() {
         int hits = 0;
         for (Ray ray : incoherent) {
-            int signs = BoundingBox.directionSigns(ray) & ~BoundingBox.FINITE_RECIPROCALS;
-            hits += Integer.bitCount(WideBoxTest.SELECTED.test(boxes, 0, ray, signs, 0, BoundingBox.MISS, entries));
+            slabs.set(ray);
+            slabs.floatSafe = false;
+            hits += Integer.bitCount(WideBoxTest.SELECTED.test(boxes, 0, slabs, 0, WideBoxTest.MISS, entries));
         }
         return hits;
     }

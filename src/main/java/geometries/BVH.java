@@ -6,31 +6,32 @@ import java.util.List;
 
 /**
  * A bounding volume hierarchy built top-down with a binned surface-area heuristic as a binary tree, then collapsed
- * into a 4-wide tree (Embree's and pbrt-v4's wide-BVH layout) and flattened depth-first into one float array.
+ * into an 8-wide tree (Embree's BVH8 and pbrt-v4's wide-BVH layout) and flattened depth-first into one float array.
  *
- * <p>Each 4-wide node is 128 bytes: the boxes of its (up to) four children in structure-of-arrays form, as floats
- * rounded outward so box tests stay conservative ({@code minX[4], minY[4], minZ[4], maxX[4], maxY[4], maxZ[4]}),
+ * <p>Each 8-wide node is 256 bytes: the boxes of its (up to) eight children in structure-of-arrays form, as floats
+ * rounded outward so box tests stay conservative ({@code minX[8], minY[8], minZ[8], maxX[8], maxY[8], maxZ[8]}),
  * then per child a link and a count. A child with a count is a leaf holding that many primitives of the leaf
  * order from its link; a child with count 0 is the node its link names. Unused slots hold an empty box (min
  * {@code +inf}, max {@code -inf}) that every ray misses. The first interior child of a node follows it in the
  * array (depth-first order).
  *
- * <p>Keeping the four child boxes in the parent lets the traversal test them with one fetch of two cache lines
- * and visit the nearest first; the 4-wide tree has about half the depth of the binary one, so a ray makes half as
- * many dependent node fetches and stack operations (see docs/BENCHMARKS.md).
+ * <p>Keeping the eight child boxes in the parent lets the traversal test them in one 256-bit vector operation per
+ * plane (AVX2: eight floats) and visit the nearest first; the 8-wide tree has about a third of the depth of the
+ * binary one, so a ray makes fewer dependent node fetches and stack operations (see docs/BENCHMARKS.md: against
+ * the former 4-wide double kernel it wins most on small scenes and incoherent rays).
  *
  * <p>Build: at each binary node the centroids are binned along the axis of largest centroid extent; the split
  * between bins that minimises {@code 1 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper
  * and small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The binary tree is
- * then collapsed: a 4-wide node starts from a binary node's two children and repeatedly replaces the interior
- * child of largest surface area by its two children until it has four. The traversal lives in {@link Accelerator},
+ * then collapsed: a wide node starts from a binary node's two children and repeatedly replaces the interior child
+ * of largest surface area by its two children until it has eight. The traversal lives in {@link Accelerator},
  * next to the primitive data it tests.
  */
 public final class BVH {
-    /** Deepest node level of the binary tree (and so of the 4-wide tree); the traversal stack is sized from it. */
+    /** Deepest node level of the binary tree (and so of the wide tree); the traversal stack is sized from it. */
     public static final int MAX_DEPTH = 64;
     /** Children per node of the traversal tree. */
-    public static final int WIDTH = 4;
+    public static final int WIDTH = 8;
     /** Entries the traversal stack may need: each node visited pushes at most {@code WIDTH - 1} more. */
     static final int STACK_SIZE = (WIDTH - 1) * MAX_DEPTH + 2;
     /**
@@ -53,8 +54,8 @@ public final class BVH {
     static final int LINK = 6 * WIDTH, COUNT = 7 * WIDTH;
 
     /**
-     * Node i at [32i, 32i+32): the six box coordinates of children 0..3 coordinate by coordinate, then the four
-     * links and the four counts stored as float bits ({@link Float#intBitsToFloat}; the values are non-negative
+     * Node i at [64i, 64i+64): the six box coordinates of children 0..7 coordinate by coordinate, then the eight
+     * links and the eight counts stored as float bits ({@link Float#intBitsToFloat}; the values are non-negative
      * ints, so no NaN pattern arises).
      */
     final float[] nodes;
@@ -85,7 +86,7 @@ public final class BVH {
         rootCount = rootIsLeaf ? b.data[1] : 0;
     }
 
-    /** Collapses the binary tree into 4-wide nodes, written depth-first. */
+    /** Collapses the binary tree into wide nodes, written depth-first. */
     private static final class Collapser {
         private final Builder b;
         float[] nodes;
@@ -98,7 +99,7 @@ public final class BVH {
         }
 
         /**
-         * How many 4-wide nodes {@link #collapse} writes for binary interior node {@code binary}: the same choices
+         * How many wide nodes {@link #collapse} writes for binary interior node {@code binary}: the same choices
          * without the writes (a few milliseconds for a million primitives, against allocating and copying an array
          * sized for the worst case).
          */
@@ -113,7 +114,7 @@ public final class BVH {
         }
 
         /**
-         * Fills {@code children} with the binary nodes that become the 4-wide children of binary interior node
+         * Fills {@code children} with the binary nodes that become the wide children of binary interior node
          * {@code binary}, in order; returns how many.
          */
         static int open(Builder b, int binary, int[] children) {
@@ -142,7 +143,7 @@ public final class BVH {
             return n;
         }
 
-        /** Writes the 4-wide node that replaces binary interior node {@code binary}; returns its index. */
+        /** Writes the wide node that replaces binary interior node {@code binary}; returns its index. */
         int collapse(int binary) {
             int self = count++;
             int[] children = new int[WIDTH];
@@ -230,7 +231,7 @@ public final class BVH {
         }
     }
 
-    /** Nodes of the traversal tree, leaves included: 4-wide interior nodes plus leaves. */
+    /** Nodes of the traversal tree, leaves included: wide interior nodes plus leaves. */
     public int nodeCount() {
         return wideNodeCount + leafCount;
     }

@@ -4,7 +4,7 @@ import java.util.List;
 
 /**
  * A read-only view of one node of a {@link BVH}'s traversal tree, for inspection and tests: its bounds and either
- * the primitives of a leaf or the indices of its two to four children. Views are numbered depth-first, so an
+ * the primitives of a leaf or the indices of its two to eight children. Views are numbered depth-first, so an
  * interior node's first child is the next node; the traversal itself reads the BVH's packed arrays, not these
  * views.
  *

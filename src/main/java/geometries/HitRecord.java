@@ -38,7 +38,9 @@ public final class HitRecord {
 
     final double[] stackEntry = new double[BVH.STACK_SIZE];
     /** Where the ray enters each child box of the node being visited. */
-    final double[] entries = new double[BVH.WIDTH];
+    final float[] entries = new float[BVH.WIDTH];
+    /** The current ray's constants for the box test. */
+    final RaySlabs slabs = new RaySlabs();
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */
     public long nodeVisits, primitiveTests;

@@ -1,17 +1,16 @@
 package geometries;
 
-import primitives.Ray;
-
 /**
- * The slab test of the {@link BVH#WIDTH} child boxes of a BVH node, the traversal's inner kernel. Two
- * implementations give bit-identical answers: a scalar one, and one on the JDK's incubating Vector API that tests
- * the four boxes at once. The vectorized one is chosen at startup when the JVM was started with
+ * The slab test of the {@link BVH#WIDTH} child boxes of a BVH node, the traversal's inner kernel, in float
+ * arithmetic made conservative by {@link RaySlabs}. Two implementations give bit-identical answers: a scalar one,
+ * and one on the JDK's incubating Vector API that tests the eight boxes in the eight lanes of a 256-bit vector
+ * (AVX2). The vectorized one is chosen at startup when the JVM was started with
  * {@code --add-modules jdk.incubator.vector}; without the flag the library runs the scalar one.
  *
- * <p>For each child box the test finds where the ray enters and leaves it within {@code (tMin, tMax)}, with the
- * conservative margins of {@link BoundingBox#entry}: the ray's direction signs say which plane of each slab is
- * entered first, the near distance is the largest entering one and the far distance the smallest leaving one,
- * and both are widened by {@code 2 gamma(3)} of their magnitude.
+ * <p>For each child box the test finds where the ray enters and leaves it within {@code (tMin, tMax)}: the ray's
+ * direction signs say which plane of each slab is entered first, the near distance is the largest entering one
+ * and the far distance the smallest leaving one, each slab distance one fused multiply-add, and both ends widened
+ * by {@link RaySlabs#SLACK} of their magnitude.
  */
 abstract class WideBoxTest {
     /**
@@ -20,14 +19,18 @@ abstract class WideBoxTest {
      */
     static final WideBoxTest SELECTED = select();
 
+    /** The entry distance of a missed box. */
+    static final float MISS = Float.POSITIVE_INFINITY;
+
     /**
      * Tests the child boxes of the node at offset {@code o} of {@code nodes}: writes where the ray enters each within
-     * {@code (tMin, tMax)}, or {@link BoundingBox#MISS}, to {@code entries[0..WIDTH)} and returns the mask of the
-     * children hit (bit c for child c).
+     * {@code (tMin, tMax)}, or {@link #MISS}, to {@code entries[0..WIDTH)} and returns the mask of the children hit
+     * (bit c for child c).
      *
-     * @param signs the ray's {@link BoundingBox#directionSigns}
+     * @param tMin the query's start rounded down ({@link RaySlabs#below})
+     * @param tMax the query's end rounded up ({@link RaySlabs#above})
      */
-    abstract int test(float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries);
+    abstract int test(float[] nodes, int o, RaySlabs ray, float tMin, float tMax, float[] entries);
 
     /** A short name for reports: "vector" or "scalar". */
     abstract String name();
@@ -47,24 +50,23 @@ abstract class WideBoxTest {
     }
 
     /**
-     * The scalar test for rays with a zero (or subnormal) direction component: their slab distances may be
-     * {@code 0 * inf = NaN} when the ray lies in a slab's plane, and comparisons ignore the NaN there. Rare, so
-     * both implementations share it.
+     * The double slab test for rays the float form cannot hold ({@link RaySlabs#floatSafe} false): zero or
+     * subnormal direction components, whose slab distances may be {@code 0 * inf = NaN} when the ray lies in a
+     * slab's plane (comparisons ignore the NaN there), or extreme magnitudes. Rare, so both implementations share it.
      */
-    static int testWithInfiniteReciprocals(
-            float[] nodes, int o, Ray ray, int signs, double tMin, double tMax, double[] entries) {
+    static int testInDouble(float[] nodes, int o, RaySlabs ray, float tMin, float tMax, float[] entries) {
         int mask = 0;
         for (int c = 0; c < BVH.WIDTH; c++) {
-            double e = entryWithInfiniteReciprocals(nodes, o + c, ray, signs, tMin, tMax);
-            entries[c] = e;
+            double e = entryInDouble(nodes, o + c, ray, tMin, tMax);
+            entries[c] = e < BoundingBox.MISS ? BVH.floatBelow(e) : MISS;
             if (e < BoundingBox.MISS) mask |= 1 << c;
         }
         return mask;
     }
 
-    private static double entryWithInfiniteReciprocals(
-            float[] nodes, int o, Ray ray, int signs, double tMin, double tMax) {
-        int sx = (signs & 1) * BVH.MAX_X, sy = (signs >> 1 & 1) * BVH.MAX_X, sz = (signs >> 2 & 1) * BVH.MAX_X;
+    private static double entryInDouble(float[] nodes, int o, RaySlabs slabs, double tMin, double tMax) {
+        primitives.Ray ray = slabs.ray;
+        int sx = slabs.flipX, sy = slabs.flipY, sz = slabs.flipZ;
         double nx = (nodes[o + BVH.MIN_X + sx] - ray.ox()) * ray.invDx();
         double fx = (nodes[o + BVH.MAX_X - sx] - ray.ox()) * ray.invDx();
         double ny = (nodes[o + BVH.MIN_Y + sy] - ray.oy()) * ray.invDy();

@@ -97,7 +97,7 @@ class BVHTest {
                     "leaf of " + n.primitiveCount());
             return node + 1;
         }
-        assertTrue(n.children().size() >= 2 && n.children().size() <= BVH.WIDTH, "2 to 4 children");
+        assertTrue(n.children().size() >= 2 && n.children().size() <= BVH.WIDTH, "2 to " + BVH.WIDTH + " children");
         // first child follows its parent; each further child follows the subtree of the one before
         int next = node + 1;
         for (int child : n.children()) {
