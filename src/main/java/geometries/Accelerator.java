@@ -46,9 +46,14 @@ public final class Accelerator implements Intersectable {
     private final Intersectable[] objects;
     /** Whether a primitive may let light through (then shadow rays must look past it). */
     private final boolean[] mayTransmit;
+    /**
+     * Whether a primitive is clear (a Geometry whose kT is exactly 1 in every channel): it changes no transmittance
+     * (a product times 1 is exact), so shadow queries skip it; the lamp globes of the street are such.
+     */
+    private final boolean[] clear;
 
     private final Intersectable[] unbounded;
-    private final boolean[] unboundedMayTransmit;
+    private final boolean[] unboundedMayTransmit, unboundedClear;
     private final BVH bvh;
     private final double buildSeconds;
     /** Build phases in seconds: gathering primitives, primitive boxes, the BVH proper, laying out the arrays. */
@@ -72,11 +77,13 @@ public final class Accelerator implements Intersectable {
         parts = new int[n];
         objects = new Intersectable[n];
         mayTransmit = new boolean[n];
+        clear = new boolean[n];
         for (int k = 0; k < n; k++) {
             int i = bvh == null ? k : bvh.order[k];
             info[2 * k] = i;
             objects[k] = c.objects[i];
             mayTransmit[k] = c.mayTransmit[i];
+            clear[k] = c.clear[i];
             if (objects[k] == null) {
                 System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
                 info[2 * k + 1] = c.shared[i];
@@ -88,8 +95,10 @@ public final class Accelerator implements Intersectable {
         }
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
+        unboundedClear = new boolean[unbounded.length];
         for (int j = 0; j < unbounded.length; j++) {
             unboundedMayTransmit[j] = mayTransmit(unbounded[j]);
+            unboundedClear[j] = isClear(unbounded[j]);
         }
         long end = System.nanoTime();
         layoutSeconds = (end - bvhDone) * 1e-9;
@@ -148,7 +157,7 @@ public final class Accelerator implements Intersectable {
         long b = 8L * triangles.length
                 + 4L * (info.length + parts.length)
                 + 8L * (owners.length + objects.length)
-                + mayTransmit.length;
+                + 2L * mayTransmit.length;
         return b + (bvh == null ? 0 : bvh.bytes());
     }
 
@@ -384,12 +393,14 @@ public final class Accelerator implements Intersectable {
         long tests = 0;
         try {
             for (int j = 0; j < unbounded.length; j++) {
+                if (honourTransparency && unboundedClear[j]) continue;
                 tests++;
                 boolean pass = honourTransparency && unboundedMayTransmit[j];
                 if (blocks(unbounded[j], boundedCount + j, pass, ray, tMin, tMax, scratch)) return true;
             }
             if (bvh == null) {
                 for (int k = 0; k < boundedCount; k++) {
+                    if (honourTransparency && clear[k]) continue;
                     tests++;
                     if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
                         if (!mayTransmit[k]) scratch.occluder = k;
@@ -414,6 +425,7 @@ public final class Accelerator implements Intersectable {
                 while (more) {
                     if (count > 0) {
                         for (int k = link, end = link + count; k < end; k++) {
+                            if (honourTransparency && clear[k]) continue;
                             tests++;
                             if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
                                 if (!mayTransmit[k]) scratch.occluder = k;
@@ -496,6 +508,12 @@ public final class Accelerator implements Intersectable {
         return false;
     }
 
+    private static boolean isClear(Intersectable g) {
+        if (!(g instanceof Geometry geometry)) return false;
+        Double3 kT = geometry.getMaterial().getKt();
+        return kT.d1 == 1 && kT.d2 == 1 && kT.d3 == 1;
+    }
+
     private static boolean mayTransmit(Intersectable g) {
         // Non-Geometry members (user composites) may contain transparent surfaces: decide per hit.
         return !(g instanceof Geometry geometry) || geometry.getMaterial().isTransparent();
@@ -513,6 +531,7 @@ public final class Accelerator implements Intersectable {
         Geometry[] owners = new Geometry[64];
         Intersectable[] objects = new Intersectable[64];
         boolean[] mayTransmit = new boolean[64];
+        boolean[] clear = new boolean[64];
         BoundingBox[] objectBoxes = new BoundingBox[64];
         final List<Intersectable> unbounded = new ArrayList<>();
         /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
@@ -576,6 +595,7 @@ public final class Accelerator implements Intersectable {
             parts[count] = part;
             owners[count] = owner;
             mayTransmit[count] = transmit;
+            clear[count] = isClear(owner);
             return count++;
         }
 
@@ -584,6 +604,7 @@ public final class Accelerator implements Intersectable {
             objects[count] = g;
             objectBoxes[count] = g.getBoundingBox();
             mayTransmit[count] = mayTransmit(g);
+            clear[count] = isClear(g);
             count++;
         }
 
@@ -597,6 +618,7 @@ public final class Accelerator implements Intersectable {
             owners = java.util.Arrays.copyOf(owners, capacity);
             objects = java.util.Arrays.copyOf(objects, capacity);
             mayTransmit = java.util.Arrays.copyOf(mayTransmit, capacity);
+            clear = java.util.Arrays.copyOf(clear, capacity);
             objectBoxes = java.util.Arrays.copyOf(objectBoxes, capacity);
         }
 

@@ -42,14 +42,17 @@ final class RaySlabs {
 
     int signs;
 
-    /** Sets the constants for {@code ray}; allocation-free. */
+    /** Sets the constants for {@code ray}; allocation-free, and small enough for the JIT to inline. */
     void set(Ray ray) {
         this.ray = ray;
-        signs = BoundingBox.directionSigns(ray);
-        flipX = (signs & 1) * BVH.MAX_X;
-        flipY = (signs >> 1 & 1) * BVH.MAX_X;
-        flipZ = (signs >> 2 & 1) * BVH.MAX_X;
         double ix = ray.invDx(), iy = ray.invDy(), iz = ray.invDz();
+        // BoundingBox.directionSigns, written out (reciprocals are never NaN, so |x| <= MAX_VALUE is isFinite).
+        int s = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0);
+        boolean finite = Math.max(Math.abs(ix), Math.max(Math.abs(iy), Math.abs(iz))) <= Double.MAX_VALUE;
+        signs = finite ? s | BoundingBox.FINITE_RECIPROCALS : s;
+        flipX = (s & 1) * BVH.MAX_X;
+        flipY = (s >> 1 & 1) * BVH.MAX_X;
+        flipZ = (s >> 2 & 1) * BVH.MAX_X;
         double ox = ray.ox() * ix, oy = ray.oy() * iy, oz = ray.oz() * iz;
         invX = (float) ix;
         invY = (float) iy;
@@ -64,19 +67,19 @@ final class RaySlabs {
         farX = (float) (ox - sx);
         farY = (float) (oy - sy);
         farZ = (float) (oz - sz);
-        // Finite, and products with infinite bounds infinite rather than NaN: reciprocals of normal magnitude (the
-        // sum of magnitudes stays finite exactly when each does).
-        floatSafe = (signs & BoundingBox.FINITE_RECIPROCALS) != 0
-                && Math.min(Math.abs(invX), Math.min(Math.abs(invY), Math.abs(invZ))) >= Float.MIN_NORMAL
-                && Float.isFinite(Math.abs(invX)
-                        + Math.abs(invY)
-                        + Math.abs(invZ)
-                        + Math.abs(nearX)
-                        + Math.abs(nearY)
-                        + Math.abs(nearZ)
-                        + Math.abs(farX)
-                        + Math.abs(farY)
-                        + Math.abs(farZ));
+        // Reciprocals of normal magnitude, so products with infinite bounds are infinite rather than NaN, and every
+        // constant finite (checked on the sum of magnitudes, which is finite only if each is).
+        float smallest = Math.min(Math.abs(invX), Math.min(Math.abs(invY), Math.abs(invZ)));
+        float sum = Math.abs(invX)
+                + Math.abs(invY)
+                + Math.abs(invZ)
+                + Math.abs(nearX)
+                + Math.abs(nearY)
+                + Math.abs(nearZ)
+                + Math.abs(farX)
+                + Math.abs(farY)
+                + Math.abs(farZ);
+        floatSafe = finite & smallest >= Float.MIN_NORMAL & sum <= Float.MAX_VALUE;
     }
 
     /** A float not above {@code tMin}, one step below its rounding (covers the underflow of tiny distances). */
