@@ -331,4 +331,28 @@ class AcceleratorTest {
         Accelerator bounded = Accelerator.build(new Sphere(new Point(1, 2, 3), 1), true);
         assertTrue(bounded.getBoundingBox().contains(new Point(2, 2, 3)));
     }
+
+    /**
+     * A clear surface (kT exactly 1) is skipped by shadow queries without changing their answer: light passes with
+     * transmittance exactly 1 and without a primitive test, while occludes() (any surface) still sees it; a sphere
+     * of kT 0.5 crossed twice still gives 0.25.
+     */
+    @ParameterizedTest
+    @ValueSource(booleans = {true, false})
+    void clearSurfacesAreSkippedByShadowQueries(boolean useBvh) {
+        Sphere clear = new Sphere(new Point(0, 0, 5), 1);
+        clear.setMaterial(new Material().setKt(1));
+        Sphere half = new Sphere(new Point(0, 0, 10), 1);
+        half.setMaterial(new Material().setKt(0.5));
+        Ray ray = new Ray(Point.ZERO, new Vector(0, 0, 1));
+        Accelerator onlyClear = Accelerator.build(new Geometries(clear), useBvh);
+        HitRecord scratch = new HitRecord();
+        assertTrue(onlyClear.passesLight(ray, 0, 20, scratch));
+        assertEquals(1.0, scratch.transmitR, 0);
+        assertEquals(0, scratch.primitiveTests, "the clear sphere is not even tested");
+        assertTrue(onlyClear.occludes(ray, 0, 20, new HitRecord()), "but it is a surface in the way");
+        Accelerator both = Accelerator.build(new Geometries(clear, half), useBvh);
+        assertTrue(both.passesLight(ray, 0, 20, scratch));
+        assertEquals(0.25, scratch.transmitG, 0);
+    }
 }
