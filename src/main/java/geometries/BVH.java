@@ -40,6 +40,11 @@ public final class BVH {
      * icosphere (fewer, fuller leaves) and the same on the heightfield.
      */
     private static final double TRAVERSAL_COST = 1.0;
+    /**
+     * Primitives below which a subtree is built by one thread: large enough that scheduling costs nothing, small
+     * enough that a million primitives give a few dozen tasks to balance.
+     */
+    static final int PARALLEL_GRAIN = 32_768;
 
     /** Floats per node in {@link #nodes}. */
     static final int NODE_STRIDE = 8 * WIDTH;
@@ -190,6 +195,14 @@ public final class BVH {
      * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
+        return build(primitiveBounds, bins, maxLeafSize, true);
+    }
+
+    /**
+     * {@link #build(double[], int, int)}, on one thread unless {@code parallel}: the trees are identical, which
+     * the tests check.
+     */
+    static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean parallel) {
         validateSettings(bins, maxLeafSize);
         if (primitiveBounds.length % 6 != 0) {
             throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
@@ -206,7 +219,7 @@ public final class BVH {
                 }
             }
         }
-        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize));
+        return new BVH(new Builder(primitiveBounds, bins, maxLeafSize, parallel));
     }
 
     /** The largest float not above {@code x}. */
@@ -325,6 +338,8 @@ public final class BVH {
         private final int[] binCount;
         private final double[] binBounds;
         private final double[] rightArea;
+        /** Scratch for the split axis {@link #split} reports. */
+        private final int[] axis = new int[1];
 
         /**
          * Six floats per node, its box rounded outward ({@link #floatBelow}, {@link #floatAbove}): all the collapse
@@ -337,22 +352,110 @@ public final class BVH {
         int leafCount;
         int maxDepthReached;
 
-        Builder(double[] primBounds, int bins, int maxLeafSize) {
+        Builder(double[] primBounds, int bins, int maxLeafSize, boolean parallel) {
+            this(primBounds, identity(primBounds.length / 6), bins, maxLeafSize, primBounds.length / 6);
+            int n = index.length;
+            if (parallel && n >= 2 * PARALLEL_GRAIN && Runtime.getRuntime().availableProcessors() > 1) {
+                buildInParallel(n);
+            } else if (n > 0) {
+                build(0, n, 0);
+            }
+        }
+
+        /** A builder for a subtree over {@code primitives} primitives of a shared {@code index}. */
+        private Builder(double[] primBounds, int[] index, int bins, int maxLeafSize, int primitives) {
             this.primBounds = primBounds;
+            this.index = index;
             this.bins = bins;
             this.maxLeafSize = maxLeafSize;
-            int n = primBounds.length / 6;
-            index = new int[n];
-            for (int i = 0; i < n; i++) index[i] = i;
             binCount = new int[bins];
             binBounds = new double[6 * bins];
             rightArea = new double[bins];
             // A binary tree over n primitives has at most 2n - 1 nodes (leaves hold at least one), so the arrays are
             // allocated once: growing them by doubling allocated and copied twice the memory on large meshes.
-            int capacity = Math.max(1, 2 * n - 1);
+            int capacity = Math.max(1, 2 * primitives - 1);
             bounds = new float[6 * capacity];
             data = new int[2 * capacity];
-            if (n > 0) build(0, n, 0);
+        }
+
+        private static int[] identity(int n) {
+            int[] index = new int[n];
+            for (int i = 0; i < n; i++) index[i] = i;
+            return index;
+        }
+
+        /**
+         * The parallel build: the top of the tree is split here exactly as {@link #build} would split it, down to
+         * ranges of at most {@link #PARALLEL_GRAIN} primitives; those subtrees are built on the common fork/join
+         * pool, each by its own builder into its own arrays (they partition disjoint ranges of the shared index);
+         * then everything is laid out depth-first as the sequential build numbers it. The tree is therefore
+         * identical, bit for bit, to the sequential one, whatever the number of cores.
+         */
+        private void buildInParallel(int n) {
+            List<Subtree> subtrees = new ArrayList<>();
+            Object top = plan(0, n, 0, subtrees);
+            subtrees.parallelStream().forEach(Subtree::build);
+            emit(top);
+        }
+
+        /** A range the parallel build hands to a builder of its own. */
+        private final class Subtree {
+            final int start, end, depth;
+            Builder builder;
+
+            Subtree(int start, int end, int depth) {
+                this.start = start;
+                this.end = end;
+                this.depth = depth;
+            }
+
+            void build() {
+                builder = new Builder(primBounds, index, bins, maxLeafSize, end - start);
+                builder.build(start, end, depth);
+            }
+        }
+
+        /** An interior node of the top of the tree: its rounded box, split axis and two children. */
+        private record Split(float[] box, int axis, Object left, Object right) {}
+
+        /** Splits {@code [start, end)} as {@link #build} would, down to subtrees; returns a Split or a Subtree. */
+        private Object plan(int start, int end, int depth, List<Subtree> subtrees) {
+            float[] box = new float[6];
+            int[] axis = new int[1];
+            int mid = end - start <= PARALLEL_GRAIN ? -1 : split(start, end, depth, box, axis);
+            if (mid < 0) {
+                Subtree subtree = new Subtree(start, end, depth);
+                subtrees.add(subtree);
+                return subtree;
+            }
+            Object left = plan(start, mid, depth + 1, subtrees);
+            return new Split(box, axis[0], left, plan(mid, end, depth + 1, subtrees));
+        }
+
+        /** Lays out a planned node and everything below it at the next node index, depth-first. */
+        private void emit(Object planned) {
+            if (planned instanceof Subtree subtree) {
+                Builder b = subtree.builder;
+                int offset = nodeCount;
+                System.arraycopy(b.bounds, 0, bounds, 6 * offset, 6 * b.nodeCount);
+                for (int i = 0; i < b.nodeCount; i++) {
+                    int link = b.data[2 * i], kind = b.data[2 * i + 1];
+                    // Interior nodes link to their second child by node index; leaves to primitive positions.
+                    data[2 * (offset + i)] = kind < 0 ? link + offset : link;
+                    data[2 * (offset + i) + 1] = kind;
+                }
+                nodeCount += b.nodeCount;
+                leafCount += b.leafCount;
+                maxDepthReached = Math.max(maxDepthReached, b.maxDepthReached);
+                return;
+            }
+            Split split = (Split) planned;
+            int node = allocateNode();
+            System.arraycopy(split.box(), 0, bounds, 6 * node, 6);
+            emit(split.left());
+            data[2 * node] = nodeCount;
+            data[2 * node + 1] = -1 - split.axis();
+            emit(split.right());
         }
 
         private int allocateNode() {
@@ -369,6 +472,30 @@ public final class BVH {
 
         private void build(int start, int end, int depth) {
             int node = allocateNode();
+            int[] axis = this.axis;
+            int mid = split(start, end, depth, bounds, 6 * node, axis);
+            if (mid < 0) {
+                makeLeaf(node, start, end - start);
+                return;
+            }
+            build(start, mid, depth + 1);
+            int second = nodeCount;
+            build(mid, end, depth + 1);
+            data[2 * node] = second;
+            data[2 * node + 1] = -1 - axis[0];
+        }
+
+        /** {@link #split(int, int, int, float[], int, int[])} writing the box to the start of {@code box}. */
+        private int split(int start, int end, int depth, float[] box, int[] axis) {
+            return split(start, end, depth, box, 0, axis);
+        }
+
+        /**
+         * Decides the node over {@code [start, end)}: writes its box rounded outward to {@code box[at..at+6)}, and
+         * either returns -1 for a leaf or partitions the range and returns the split position, with the split axis
+         * in {@code axisOut[0]}.
+         */
+        private int split(int start, int end, int depth, float[] box, int at, int[] axisOut) {
             int count = end - start;
             // Node bounds and centroid bounds in one pass.
             double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0;
@@ -394,44 +521,25 @@ public final class BVH {
                 cy1 = Math.max(cy1, y);
                 cz1 = Math.max(cz1, z);
             }
-            int b = 6 * node;
-            bounds[b] = floatBelow(bx0);
-            bounds[b + 1] = floatBelow(by0);
-            bounds[b + 2] = floatBelow(bz0);
-            bounds[b + 3] = floatAbove(bx1);
-            bounds[b + 4] = floatAbove(by1);
-            bounds[b + 5] = floatAbove(bz1);
+            box[at] = floatBelow(bx0);
+            box[at + 1] = floatBelow(by0);
+            box[at + 2] = floatBelow(bz0);
+            box[at + 3] = floatAbove(bx1);
+            box[at + 4] = floatAbove(by1);
+            box[at + 5] = floatAbove(bz1);
             maxDepthReached = Math.max(maxDepthReached, depth);
 
-            if (count == 1 || depth >= MAX_DEPTH) {
-                makeLeaf(node, start, count);
-                return;
-            }
+            if (count == 1 || depth >= MAX_DEPTH) return -1;
             double ex = cx1 - cx0, ey = cy1 - cy0, ez = cz1 - cz0;
             int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+            axisOut[0] = axis;
             double lo = axis == 0 ? cx0 : axis == 1 ? cy0 : cz0;
             double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
-
-            int mid;
             if (!(extent > 0)) {
                 // All centroids coincide: nothing separates them, so split by count to keep leaves small.
-                if (count <= maxLeafSize) {
-                    makeLeaf(node, start, count);
-                    return;
-                }
-                mid = start + count / 2;
-            } else {
-                mid = sahPartition(start, end, axis, lo, extent, surfaceArea(bx0, by0, bz0, bx1, by1, bz1), count);
-                if (mid < 0) {
-                    makeLeaf(node, start, count);
-                    return;
-                }
+                return count <= maxLeafSize ? -1 : start + count / 2;
             }
-            build(start, mid, depth + 1);
-            int second = nodeCount;
-            build(mid, end, depth + 1);
-            data[2 * node] = second;
-            data[2 * node + 1] = -1 - axis;
+            return sahPartition(start, end, axis, lo, extent, surfaceArea(bx0, by0, bz0, bx1, by1, bz1), count);
         }
 
         /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */

@@ -42,7 +42,7 @@ final class RaySlabs {
 
     int signs;
 
-    /** Sets the constants for {@code ray}; allocation-free, and small enough for the JIT to inline. */
+    /** Sets the constants for {@code ray}; allocation-free, once per query. */
     void set(Ray ray) {
         this.ray = ray;
         double ix = ray.invDx(), iy = ray.invDy(), iz = ray.invDz();

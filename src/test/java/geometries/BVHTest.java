@@ -1,5 +1,6 @@
 package geometries;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /** Structural tests of {@link BVH}: every primitive once, boxes nest, leaves bounded, depth bounded. */
 class BVHTest {
@@ -107,5 +109,40 @@ class BVHTest {
             next = check(bvh, child, boxes, seen, count, maxLeaf, depth + 1);
         }
         return next;
+    }
+
+    /**
+     * The parallel build (top split on the calling thread, subtrees of up to PARALLEL_GRAIN primitives on the
+     * fork/join pool) gives the very tree the sequential build gives: same nodes, same leaf order, same statistics,
+     * on random boxes (clusters, duplicates, flat boxes) and on a mesh, each large enough to take the parallel path.
+     */
+    @ParameterizedTest
+    @ValueSource(longs = {1, 2, 3})
+    void theParallelBuildIsTheSequentialBuild(long seed) {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(seed);
+        int n = 2 * BVH.PARALLEL_GRAIN + random.nextInt(BVH.PARALLEL_GRAIN);
+        double[] boxes = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            int cluster = random.nextInt(8);
+            for (int a = 0; a < 3; a++) {
+                double lo = random.nextInt(5) == 0 ? cluster : cluster + 10 * random.nextDouble();
+                double size = random.nextInt(4) == 0 ? 0 : random.nextDouble() * 0.1;
+                boxes[6 * p + a] = lo;
+                boxes[6 * p + 3 + a] = lo + size;
+            }
+        }
+        assertSameTree(BVH.build(boxes, 16, 4, false), BVH.build(boxes, 16, 4, true));
+    }
+
+    private static void assertSameTree(BVH sequential, BVH parallel) {
+        assertArrayEquals(sequential.nodes, parallel.nodes);
+        assertArrayEquals(sequential.order, parallel.order);
+        assertArrayEquals(sequential.rootBounds, parallel.rootBounds);
+        assertEquals(sequential.rootLink, parallel.rootLink);
+        assertEquals(sequential.rootCount, parallel.rootCount);
+        assertEquals(sequential.nodeCount(), parallel.nodeCount());
+        assertEquals(sequential.binaryNodeCount(), parallel.binaryNodeCount());
+        assertEquals(sequential.leafCount(), parallel.leafCount());
+        assertEquals(sequential.depth(), parallel.depth());
     }
 }
