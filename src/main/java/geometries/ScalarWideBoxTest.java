@@ -26,7 +26,7 @@ final class ScalarWideBoxTest extends WideBoxTest {
         return mask;
     }
 
-    /** The vector kernel's max: no operand is NaN, see {@link VectorWideBoxTest}. */
+    /** The vector kernel's max: no operand is NaN, see {@code VectorWideBoxTest}. */
     private static float max(float a, float b) {
         return a < b ? b : a;
     }

@@ -45,7 +45,7 @@ public class PointLight implements LightSource {
     }
 
     /**
-     * Shadow rays per shading point when the radius is positive, 1 to {@link Limits.MAX_SAMPLES} (the
+     * Shadow rays per shading point when the radius is positive, 1 to {@link Limits#MAX_SAMPLES} (the
      * limit of anti-aliasing too).
      */
     public PointLight setNumSamples(int numSamples) {
