@@ -3,6 +3,8 @@ package renderer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import primitives.Color;
@@ -27,6 +29,11 @@ import scene.Scene;
  * {@link SamplingConfig}, a beam over the pixel's area averaged with a box filter (anti-aliasing), optionally
  * adaptive (recursive subdivision where corner colours differ). With an aperture, every sample becomes a beam
  * over the lens disk focused on the focal plane (depth of field).
+ *
+ * <p>A render can be cancelled: by interrupting the thread that called {@link #renderImage()} (or
+ * {@link #renderRegion}), or by {@link #cancel()} from any thread. The render threads stop at the next row of
+ * their tile, and the call throws a {@link CancellationException}; nothing is written (images are written only by
+ * the separate {@code writeToImage} calls), and an interrupted caller keeps its interrupt status.
  */
 public final class Camera implements Cloneable {
     private static final int TILE = 16;
@@ -44,6 +51,8 @@ public final class Camera implements Cloneable {
     private double focalDistance = 0;
     private SamplingConfig apertureSampling = new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED);
     private ProgressListener progress;
+    /** Set by {@link #cancel()}; cleared when a render starts. */
+    private volatile boolean cancelRequested;
 
     private ImageWriter image;
     private RenderStatistics lastStatistics;
@@ -234,9 +243,21 @@ public final class Camera implements Cloneable {
         void write(int x, int y, double red, double green, double blue);
     }
 
+    /**
+     * Cancels the render in progress on this camera, if any: its render threads stop at the next row of their tile
+     * and the rendering call throws a {@link CancellationException}. Safe from any thread (a shutdown hook, a UI).
+     */
+    public void cancel() {
+        cancelRequested = true;
+    }
+
     /** Renders a rectangle of the image in 16 x 16 tiles on the render threads into {@code sink}. */
     private RenderStatistics render(int x0, int y0, int width, int height, PixelSink sink) {
         long start = System.nanoTime();
+        cancelRequested = false;
+        Thread caller = Thread.currentThread();
+        // Set once the caller was interrupted or cancel() called: every render thread stops at its next row.
+        AtomicBoolean stop = new AtomicBoolean();
         rayTracer.prepare(settings);
         double preparation = rayTracer.preparationSeconds();
         PixelRenderer pixels = new PixelRenderer();
@@ -258,6 +279,11 @@ public final class Camera implements Cloneable {
                             t = next.getAndIncrement()) {
                         int tx = x0 + (t % tilesX) * TILE, ty = y0 + (t / tilesX) * TILE;
                         for (int y = ty; y < Math.min(ty + TILE, yEnd); y++) {
+                            if (stop.get() || cancelRequested || caller.isInterrupted()) {
+                                stop.set(true);
+                                throw new CancellationException("render cancelled after " + done.get() + " of " + total
+                                        + " tiles; no image was produced");
+                            }
                             for (int x = tx; x < Math.min(tx + TILE, xEnd); x++) {
                                 pixels.render(x, y, ctx);
                                 sink.write(x, y, ctx.red, ctx.green, ctx.blue);
@@ -271,7 +297,7 @@ public final class Camera implements Cloneable {
                 }
             };
         }
-        runAll(jobs);
+        runAll(jobs, () -> stop.set(true));
         Throwable error = failure.get();
         if (error instanceof RuntimeException re) throw re;
         if (error instanceof Error err) throw err;
@@ -289,8 +315,12 @@ public final class Camera implements Cloneable {
                 wall, preparation, workers, (long) width * height, rays, visits, tests, rayTracer.describePlan());
     }
 
-    /** Runs the jobs on their own threads, the last one on the calling thread. */
-    private static void runAll(Runnable[] jobs) {
+    /**
+     * Runs the jobs on their own threads, the last one on the calling thread; {@code onInterrupt} runs if the
+     * caller is interrupted while it waits for the others (waiting clears the interrupt status, so the jobs would
+     * not see it), and the status is restored at the end.
+     */
+    private static void runAll(Runnable[] jobs, Runnable onInterrupt) {
         Thread[] started = new Thread[jobs.length - 1];
         for (int i = 0; i < started.length; i++) {
             started[i] = new Thread(jobs[i], "render-" + i);
@@ -305,6 +335,7 @@ public final class Camera implements Cloneable {
                     break;
                 } catch (InterruptedException e) {
                     interrupted = true;
+                    onInterrupt.run();
                 }
             }
             if (interrupted) Thread.currentThread().interrupt();
