@@ -7,6 +7,8 @@ import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
@@ -15,6 +17,11 @@ import java.util.concurrent.ThreadLocalRandom;
  * any, untouched and no temporary file behind. The temporary file is created with the default permissions (the
  * process' umask), not the owner-only ones of {@link Files#createTempFile}, so the result is readable like any
  * file the user creates.
+ *
+ * <p>Temporary names are short and fixed in length ({@code .raytracer-<16 hex digits>.tmp}, 31 characters), so
+ * they fit the file system wherever the final name does. Temporary files still being written when the JVM shuts
+ * down (Ctrl-C, SIGTERM) are deleted by a shutdown hook; only a SIGKILL or a power cut can leave one, hidden,
+ * and such leftovers older than a day are removed the next time a file is written to that folder.
  */
 public final class AtomicFile {
     /** What writes the content, given the temporary file to write it to. */
@@ -23,7 +30,28 @@ public final class AtomicFile {
         void writeTo(Path temp) throws IOException;
     }
 
+    /** Prefix and suffix of every temporary file this class creates. */
+    static final String TEMP_PREFIX = ".raytracer-", TEMP_SUFFIX = ".tmp";
+    /** Leftover temporary files older than this are deleted when a file is written beside them. */
+    private static final long STALE_MILLIS = 24L * 60 * 60 * 1000;
+    /** Temporary files being written right now, for the shutdown hook. */
+    private static final Set<Path> IN_FLIGHT = ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(AtomicFile::deleteInFlight, "atomic-file-cleanup"));
+    }
+
     private AtomicFile() {}
+
+    private static void deleteInFlight() {
+        for (Path temp : IN_FLIGHT) {
+            try {
+                Files.deleteIfExists(temp);
+            } catch (IOException ignored) {
+                // shutting down: nothing more to do
+            }
+        }
+    }
 
     /**
      * Writes {@code file} (parent folders created as needed) and returns its absolute path; an I/O failure is an
@@ -31,10 +59,12 @@ public final class AtomicFile {
      */
     public static Path write(Path file, String what, Content content) {
         Path target = file.toAbsolutePath();
-        Path temp = null;
+        Path temp = null, created = null;
         try {
             Files.createDirectories(target.getParent());
-            temp = createTemp(target);
+            deleteStaleTemps(target.getParent());
+            temp = created = createTemp(target);
+            IN_FLIGHT.add(created);
             content.writeTo(temp);
             try {
                 Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
@@ -53,13 +83,30 @@ public final class AtomicFile {
                     // the original error is the one worth reporting
                 }
             }
+            if (created != null) IN_FLIGHT.remove(created);
+        }
+    }
+
+    /** Deletes this class's temporary files in {@code folder} older than a day (left by a killed process). */
+    private static void deleteStaleTemps(Path folder) {
+        long cutoff = System.currentTimeMillis() - STALE_MILLIS;
+        try (var entries = Files.newDirectoryStream(folder, TEMP_PREFIX + "*" + TEMP_SUFFIX)) {
+            for (Path leftover : entries) {
+                if (Files.isRegularFile(leftover, java.nio.file.LinkOption.NOFOLLOW_LINKS)
+                        && Files.getLastModifiedTime(leftover).toMillis() < cutoff) {
+                    Files.deleteIfExists(leftover);
+                }
+            }
+        } catch (IOException | RuntimeException ignored) {
+            // best effort: a leftover is hidden and harmless
         }
     }
 
     private static Path createTemp(Path target) throws IOException {
         for (int attempt = 0; ; attempt++) {
-            String name = "." + target.getFileName() + "."
-                    + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp";
+            String name = TEMP_PREFIX
+                    + String.format("%016x", ThreadLocalRandom.current().nextLong())
+                    + TEMP_SUFFIX;
             try {
                 return Files.createFile(target.resolveSibling(name));
             } catch (FileAlreadyExistsException e) {
