@@ -4,6 +4,9 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -32,7 +35,8 @@ import sceneio.model.SceneDocument;
         exitCodeList = {
             "0:the image was written",
             "1:the render or writing the image failed",
-            "2:bad input: scene file, option or output path (nothing rendered)"
+            "2:bad input: scene file, option or output path (nothing rendered)",
+            "130:cancelled (Ctrl-C, SIGTERM): no image written"
         })
 public final class RenderCommand implements Callable<Integer> {
     @Spec
@@ -86,12 +90,38 @@ public final class RenderCommand implements Callable<Integer> {
         boolean existed = Files.exists(target);
 
         Camera camera = loaded.camera();
+        // Ctrl-C or SIGTERM during the render: cancel it and let this thread report it before the JVM exits
+        // (AtomicFile's own hook removes a temporary image if the signal comes while it is being written).
+        CountDownLatch finished = new CountDownLatch(1);
+        Thread cancelOnSignal = new Thread(
+                () -> {
+                    camera.cancel();
+                    try {
+                        finished.await(10, TimeUnit.SECONDS);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                    }
+                },
+                "cancel-render");
+        Runtime.getRuntime().addShutdownHook(cancelOnSignal);
         try (RenderProgress listener = RenderProgress.create(quiet ? ProgressMode.NONE : progress, System.err, err)) {
             camera.setProgressListener(listener);
             camera.renderImage();
+        } catch (CancellationException e) {
+            err.println("render cancelled: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            err.flush();
+            finished.countDown();
+            return ExitCodes.CANCELLED;
         } catch (RuntimeException | Error e) {
             err.println("render failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
             throw e;
+        } finally {
+            finished.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(cancelOnSignal);
+            } catch (IllegalStateException shuttingDown) {
+                // the JVM is exiting: the hook has run
+            }
         }
         try {
             camera.writeToImage(target);
