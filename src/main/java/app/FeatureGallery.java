@@ -30,6 +30,11 @@ public final class FeatureGallery {
         int runs = args.length > 0 ? Integer.parseInt(args[0]) : 3;
         int width = args.length > 1 ? Integer.parseInt(args[1]) : 400;
         int height = args.length > 2 ? Integer.parseInt(args[2]) : 250;
+        if (runs < 1 || runs > 1000) throw new IllegalArgumentException("runs must be in [1, 1000], but was " + runs);
+        if (width < 1 || height < 1 || (long) width * height > 1L << 24) {
+            throw new IllegalArgumentException("width and height must be at least 1 and hold at most 2^24 pixels, but"
+                    + " were " + width + " x " + height);
+        }
         System.out.printf(
                 Locale.ROOT,
                 "Showcase scene, %d x %d, %d thread(s), median of %d runs%n%n",

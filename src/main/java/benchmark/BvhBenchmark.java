@@ -108,7 +108,10 @@ public final class BvhBenchmark {
                 default -> throw new IllegalArgumentException("unknown option " + kv[0] + " (runs, threads, only)");
             }
         }
-        if (runs < 1) throw new IllegalArgumentException("runs must be at least 1, but was " + runs);
+        if (runs < 1 || runs > 1000) throw new IllegalArgumentException("runs must be in [1, 1000], but was " + runs);
+        for (int t : threads) {
+            if (t < 1 || t > 256) throw new IllegalArgumentException("threads must be in [1, 256], but was " + t);
+        }
         new BvhBenchmark(runs, threads, only).run();
     }
 

@@ -35,6 +35,7 @@ public final class PlanningBenchmark {
 
     public static void main(String[] args) {
         int runs = args.length > 0 ? Integer.parseInt(args[0]) : 5;
+        if (runs < 1 || runs > 1000) throw new IllegalArgumentException("runs must be in [1, 1000], but was " + runs);
         Map<String, Supplier<Camera.Builder>> scenes = new LinkedHashMap<>();
         scenes.put("matte only (5 spheres, floor, 3 lights), 800x600", () -> matteCamera(800, 600));
         scenes.put(

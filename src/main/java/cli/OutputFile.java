@@ -14,6 +14,34 @@ import java.util.Locale;
 public final class OutputFile {
     private OutputFile() {}
 
+    /** Longest scene name the default output file takes (bytes of UTF-8; file systems allow 255 per name). */
+    static final int MAX_NAME_BYTES = 200;
+
+    /**
+     * The default output of a scene rendered without {@code -o}: {@code images/<name>.png}. The name comes from the
+     * scene file, so it must be a plain file name: no folder separators, no {@code ..}, no control characters, at
+     * most {@value #MAX_NAME_BYTES} bytes; otherwise the user is asked for {@code -o}.
+     */
+    public static Path defaultFor(String sceneName) throws BadInputException {
+        String problem = null;
+        if (sceneName == null || sceneName.isBlank()) {
+            problem = "is empty";
+        } else if (sceneName.contains("/") || sceneName.contains("\\")) {
+            problem = "contains a folder separator";
+        } else if (sceneName.equals(".") || sceneName.equals("..") || sceneName.startsWith(".")) {
+            problem = "starts with '.'";
+        } else if (sceneName.chars().anyMatch(c -> Character.isISOControl(c))) {
+            problem = "contains control characters";
+        } else if (sceneName.getBytes(java.nio.charset.StandardCharsets.UTF_8).length > MAX_NAME_BYTES) {
+            problem = "is longer than " + MAX_NAME_BYTES + " bytes";
+        }
+        if (problem != null) {
+            throw new BadInputException("scene name \"" + primitives.Printable.of(sceneName) + "\" " + problem
+                    + ", so it cannot name the default output images/<name>.png; give the output with -o FILE.png");
+        }
+        return Path.of("images", sceneName + ".png");
+    }
+
     /** The validated target path. */
     public static Path check(Path file, boolean createFolder) throws BadInputException {
         String name = file.getFileName() == null ? "" : file.getFileName().toString();

@@ -66,11 +66,11 @@ public final class RaytracerCli implements Runnable {
         cl.setExecutionExceptionHandler((e, commandLine, parseResult) -> {
             PrintWriter w = commandLine.getErr();
             if (e instanceof SceneFileException || e instanceof BadInputException) {
-                w.println("error: " + e.getMessage());
+                w.println("error: " + primitives.Printable.message(e.getMessage()));
                 w.flush();
                 return ExitCodes.BAD_INPUT;
             }
-            w.println("render failed: " + e);
+            w.println("render failed: " + primitives.Printable.message(e.toString()));
             StackTraceElement[] trace = e.getStackTrace();
             for (int i = 0; i < Math.min(trace.length, 8); i++) w.println("    at " + trace[i]);
             w.flush();

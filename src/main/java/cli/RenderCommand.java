@@ -3,6 +3,8 @@ package cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.CountDownLatch;
@@ -13,6 +15,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import primitives.Printable;
 import renderer.Camera;
 import sceneio.LoadedScene;
 import sceneio.SceneLoader;
@@ -57,6 +60,13 @@ public final class RenderCommand implements Callable<Integer> {
             description = "render threads (default: the scene's, else all cores)")
     private Integer threads;
 
+    @Option(
+            names = "--allow-path",
+            paramLabel = "DIR",
+            description = "also let the scene read files (OBJ meshes) under DIR; by default only files in the scene"
+                    + " file's folder tree are read (repeatable)")
+    private List<Path> allowedPaths = new ArrayList<>();
+
     @Mixin
     private RenderOverrides overrides = new RenderOverrides();
 
@@ -81,12 +91,17 @@ public final class RenderCommand implements Callable<Integer> {
 
         SceneDocument document = SceneLoader.read(sceneFile);
         document = applyOverrides(document);
-        LoadedScene loaded = SceneLoader.build(document, sceneFile);
+        for (Path folder : allowedPaths) {
+            if (!Files.isDirectory(folder)) {
+                throw new BadInputException("--allow-path " + Printable.of(folder.toString()) + ": not a folder");
+            }
+        }
+        LoadedScene loaded = SceneLoader.build(document, sceneFile, allowedPaths);
         for (String warning : loaded.warnings()) err.println("warning: " + warning);
 
         Path target = output != null
                 ? OutputFile.check(output, false)
-                : OutputFile.check(Path.of("images", loaded.scene().getName() + ".png"), true);
+                : OutputFile.check(OutputFile.defaultFor(loaded.scene().getName()), true);
         boolean existed = Files.exists(target);
 
         Camera camera = loaded.camera();

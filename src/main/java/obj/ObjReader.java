@@ -85,14 +85,41 @@ public final class ObjReader {
         ObjReader reader = new ObjReader(name);
         try {
             BufferedReader lines = new BufferedReader(text);
-            for (String line = lines.readLine(); line != null; line = lines.readLine()) {
-                reader.lineNumber++;
-                reader.parseLine(line);
-            }
+            StringBuilder line = new StringBuilder();
+            while (readLine(lines, line, reader)) reader.parseLine(line.toString());
         } catch (IOException e) {
             throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
         }
         return reader.finish();
+    }
+
+    /**
+     * Reads the next line into {@code line} (without its terminator) and counts it; false at the end of the text.
+     * Lines are bounded ({@link #MAX_LINE_LENGTH}) and so is the whole text ({@link #MAX_CHARACTERS}): a file
+     * without line breaks, or an endless one, is an error, not an out-of-memory crash.
+     */
+    private static boolean readLine(BufferedReader in, StringBuilder line, ObjReader reader)
+            throws IOException, ObjFormatException {
+        line.setLength(0);
+        int c = in.read();
+        if (c < 0) return false;
+        reader.lineNumber++;
+        while (c >= 0 && c != '\n') {
+            if (++reader.characters > MAX_CHARACTERS) {
+                throw reader.error("the file is longer than " + MAX_CHARACTERS + " characters, the most an OBJ"
+                        + " file may have here");
+            }
+            if (c != '\r') line.append((char) c);
+            if (line.length() > MAX_LINE_LENGTH) {
+                throw reader.error(
+                        reader.sawStatement
+                                ? "line longer than " + MAX_LINE_LENGTH + " characters"
+                                : "line longer than " + MAX_LINE_LENGTH
+                                        + " characters before any OBJ statement: this is" + " not an OBJ file");
+            }
+            c = in.read();
+        }
+        return true;
     }
 
     /** Reads OBJ text held in a string. */
@@ -100,12 +127,29 @@ public final class ObjReader {
         return read(name, new StringReader(text));
     }
 
+    /** Longest line read (characters): OBJ lines are short, a face of a thousand corners fits. */
+    public static final int MAX_LINE_LENGTH = 1 << 16;
+    /** Longest OBJ text read (characters, about bytes): 2^31 - 1, the most a Java array can index. */
+    public static final long MAX_CHARACTERS = Integer.MAX_VALUE;
+
+    /** Characters read so far. */
+    private long characters;
+    /**
+     * Whether a line starting with an OBJ keyword was read: until then a bad line is reported without quoting it,
+     * since the file may be any file of the machine rather than an OBJ file.
+     */
+    private boolean sawStatement;
+
     private void parseLine(String raw) throws ObjFormatException {
         int hash = raw.indexOf('#');
         String line = (hash >= 0 ? raw.substring(0, hash) : raw).strip();
         if (line.isEmpty()) return;
         String[] tokens = line.split("\\s+");
         String keyword = tokens[0];
+        // A line that starts with an OBJ keyword makes the file an OBJ file: its tokens may then be quoted.
+        if (keyword.equals("v") || keyword.equals("vn") || keyword.equals("f") || SKIPPED.containsKey(keyword)) {
+            sawStatement = true;
+        }
         switch (keyword) {
             case "v" -> vertex(tokens);
             case "vn" -> normal(tokens);
@@ -142,7 +186,7 @@ public final class ObjReader {
             String corner = tokens[i + 1];
             String[] parts = corner.split("/", -1);
             if (parts.length > 3 || parts[0].isEmpty()) {
-                throw error("face corner '" + corner + "' must be v, v/vt, v//vn or v/vt/vn");
+                throw error("face corner '" + abbreviate(corner) + "' must be v, v/vt, v//vn or v/vt/vn");
             }
             v[i] = resolve(parts[0], vertices.size() / 3, "vertex", corner);
             if (parts.length >= 2 && !parts[1].isEmpty()) {
@@ -171,19 +215,20 @@ public final class ObjReader {
         try {
             index = Integer.parseInt(token);
         } catch (NumberFormatException e) {
-            throw error("face corner '" + corner + "': " + what + " index '" + token + "' is not an integer");
+            throw error("face corner '" + abbreviate(corner) + "': " + what + " index '" + abbreviate(token)
+                    + "' is not an integer");
         }
         String allowed = count == 0
                 ? "no " + what + " is defined before this line"
                 : "allowed are 1.." + count + ", or -1..-" + count + " counting back from the latest";
         if (index == 0) {
-            throw error("face corner '" + corner + "': " + what + " index 0 is invalid: OBJ indices start at 1 ("
-                    + allowed + ")");
+            throw error("face corner '" + abbreviate(corner) + "': " + what
+                    + " index 0 is invalid: OBJ indices start at 1 (" + allowed + ")");
         }
         int resolved = index > 0 ? index - 1 : count + index;
         if (resolved < 0 || resolved >= count) {
-            throw error("face corner '" + corner + "': " + what + " index " + index + " is out of range: " + count
-                    + " defined before this line (" + allowed + ")");
+            throw error("face corner '" + abbreviate(corner) + "': " + what + " index " + index + " is out of range: "
+                    + count + " defined before this line (" + allowed + ")");
         }
         return resolved;
     }
@@ -193,18 +238,22 @@ public final class ObjReader {
         try {
             value = Double.parseDouble(token);
         } catch (NumberFormatException e) {
-            throw error("'" + keyword + "' value '" + token + "' is not a number");
+            throw error("'" + keyword + "' value '" + abbreviate(token) + "' is not a number");
         }
         if (!Double.isFinite(value)) {
-            throw error("'" + keyword + "' value '" + token + "' must be a finite number");
+            throw error("'" + keyword + "' value '" + abbreviate(token) + "' must be a finite number");
         }
         return value;
     }
 
     private void skip(String keyword) throws ObjFormatException {
-        if (!keyword.matches("[A-Za-z_][A-Za-z0-9_]*")) {
-            throw error("'" + abbreviate(keyword) + "' is not an OBJ statement (a line starts with a keyword such"
-                    + " as v, vn or f)");
+        if (!keyword.matches("[A-Za-z_][A-Za-z0-9_]*") || (!sawStatement && !SKIPPED.containsKey(keyword))) {
+            throw error(
+                    sawStatement
+                            ? "'" + abbreviate(keyword) + "' is not an OBJ statement (a line starts with a keyword such"
+                                    + " as v, vn or f)"
+                            : "does not start like an OBJ file: its first statement is not one (a line starts with a"
+                                    + " keyword such as v, vn, f, o or g)");
         }
         if (keyword.equals("vt")) textureCoordinates++;
         skipped.computeIfAbsent(keyword, k -> new int[] {0, lineNumber})[0]++;
@@ -267,8 +316,9 @@ public final class ObjReader {
         return new ObjFormatException(file, lineNumber, reason);
     }
 
+    /** Input quoted in a message: escaped (no terminal control sequences) and short. */
     private static String abbreviate(String s) {
-        return s.length() <= 20 ? s : s.substring(0, 20) + "...";
+        return primitives.Printable.of(s.length() <= 20 ? s : s.substring(0, 20) + "...");
     }
 
     /** A growable double array: OBJ files hold millions of values, which boxed lists would triple in size. */

@@ -316,17 +316,22 @@ public final class Camera implements Cloneable {
     }
 
     /**
-     * Runs the jobs on their own threads, the last one on the calling thread; {@code onInterrupt} runs if the
-     * caller is interrupted while it waits for the others (waiting clears the interrupt status, so the jobs would
-     * not see it), and the status is restored at the end.
+     * Stack of each render thread: recursion to {@link RenderSettings#MAX_LEVEL} between two perfect mirrors needs
+     * about 1 MB interpreted; 8 MB leaves room, whatever stack the calling thread has (only reserved, not used).
+     */
+    private static final long RENDER_STACK_BYTES = 8L << 20;
+
+    /**
+     * Runs the jobs on threads of their own, with a known stack, and waits for them; {@code onInterrupt} runs if
+     * the caller is interrupted while it waits (waiting clears the interrupt status, so the jobs would not see
+     * it), and the status is restored at the end.
      */
     private static void runAll(Runnable[] jobs, Runnable onInterrupt) {
-        Thread[] started = new Thread[jobs.length - 1];
+        Thread[] started = new Thread[jobs.length];
         for (int i = 0; i < started.length; i++) {
-            started[i] = new Thread(jobs[i], "render-" + i);
+            started[i] = new Thread(null, jobs[i], "render-" + i, RENDER_STACK_BYTES);
             started[i].start();
         }
-        jobs[jobs.length - 1].run();
         for (Thread t : started) {
             boolean interrupted = false;
             while (true) {

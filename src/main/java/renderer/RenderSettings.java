@@ -40,6 +40,12 @@ public record RenderSettings(
      * BVH on, planning on, 10 levels, recursion cut below attenuation 0.001, jittered shadows, 16 jittered glossy
      * rays, light cut-off half a display step.
      */
+    /**
+     * Deepest recursion allowed: far beyond what any image needs (each level is a bounce; paths fade long before),
+     * and shallow enough that two perfect mirrors facing each other cannot overflow a render thread's stack.
+     */
+    public static final int MAX_LEVEL = 256;
+
     public static final RenderSettings DEFAULT = new RenderSettings(
             true,
             Accelerator.DEFAULT_BINS,
@@ -59,8 +65,8 @@ public record RenderSettings(
         if (bvhMaxLeafSize < 1 || bvhMaxLeafSize > 64) {
             throw new IllegalArgumentException("bvhMaxLeafSize must be in [1, 64], but was " + bvhMaxLeafSize);
         }
-        if (maxLevel < 1) {
-            throw new IllegalArgumentException("maxLevel must be >= 1, but was " + maxLevel);
+        if (maxLevel < 1 || maxLevel > MAX_LEVEL) {
+            throw new IllegalArgumentException("maxLevel must be in [1, " + MAX_LEVEL + "], but was " + maxLevel);
         }
         if (!(minAttenuation >= 0 && minAttenuation < 1)) {
             throw new IllegalArgumentException("minAttenuation must be in [0, 1), but was " + minAttenuation);

@@ -51,7 +51,13 @@ final class JsonErrors {
                 column = place[1];
             }
         }
-        return new SceneFileException(file, line, column, path == null ? null : path.toString(), problem(e), e);
+        return new SceneFileException(
+                file,
+                line,
+                column,
+                path == null ? null : primitives.Printable.message(path.toString()),
+                primitives.Printable.message(problem(e)),
+                e);
     }
 
     private static String problem(JsonProcessingException e) {

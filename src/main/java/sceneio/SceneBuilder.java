@@ -31,6 +31,7 @@ import primitives.Color;
 import primitives.Double3;
 import primitives.Material;
 import primitives.Point;
+import primitives.Printable;
 import primitives.Ray;
 import primitives.Vector;
 import renderer.Camera;
@@ -75,9 +76,28 @@ import sceneio.model.Vec3;
 final class SceneBuilder {
     /** Largest image (pixels), as in the core's image writer: beyond it the pixel buffer cannot be allocated. */
     private static final long MAX_PIXELS = 1L << 28;
+    /**
+     * Memory an image needs per pixel: three doubles of linear colour while rendering, and four bytes of the PNG
+     * buffer when it is written.
+     */
+    static final int BYTES_PER_PIXEL = 28;
+
+    /** The most threads a scene file or the command line gets: four per core. */
+    static int maxThreads() {
+        return 4 * Runtime.getRuntime().availableProcessors();
+    }
+
+    /** Heap the JVM can still give: its maximum minus what is in use now. */
+    private static long availableHeap() {
+        Runtime rt = Runtime.getRuntime();
+        return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
+    }
 
     private final String file;
     private final Path baseDir;
+    /** Folders (real paths) that referenced files may resolve into: the scene's folder and what the user allowed. */
+    private final List<Path> allowedFolders;
+
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
     private final Map<String, Material> materials = new HashMap<>();
@@ -86,11 +106,25 @@ final class SceneBuilder {
      * @param file the scene file's name for messages
      * @param baseDir folder that relative OBJ paths start from
      * @param text supplies the document's text, only on error, to find line and column (null: paths only)
+     * @param alsoAllowed folders besides {@code baseDir} that referenced files may resolve into
      */
-    SceneBuilder(String file, Path baseDir, Supplier<String> text) {
+    SceneBuilder(String file, Path baseDir, Supplier<String> text, List<Path> alsoAllowed) {
         this.file = file;
         this.baseDir = baseDir;
         this.text = text;
+        List<Path> allowed = new ArrayList<>();
+        allowed.add(realFolder(baseDir));
+        for (Path folder : alsoAllowed) allowed.add(realFolder(folder));
+        this.allowedFolders = List.copyOf(allowed);
+    }
+
+    /** The folder with links followed, or as given (absolute, normalized) when it does not exist. */
+    private static Path realFolder(Path folder) {
+        try {
+            return folder.toRealPath();
+        } catch (java.io.IOException | SecurityException e) {
+            return folder.toAbsolutePath().normalize();
+        }
     }
 
     LoadedScene build(SceneDocument d, String defaultName) throws SceneFileException {
@@ -190,9 +224,34 @@ final class SceneBuilder {
         if ((long) nX * nY > MAX_PIXELS) {
             throw fail(rp, "image of " + nX + " x " + nY + " pixels is too large (at most 2^28 pixels)");
         }
+        long needed = (long) nX * nY * BYTES_PER_PIXEL, available = availableHeap();
+        if (needed > available) {
+            throw fail(
+                    rp,
+                    String.format(
+                            java.util.Locale.ROOT,
+                            "image of %d x %d pixels needs about %.1f GB of memory (%d bytes per pixel), but this"
+                                    + " JVM can give %.1f GB; render it smaller or in regions, or give Java more"
+                                    + " memory (-Xmx)",
+                            nX,
+                            nY,
+                            needed / 1e9,
+                            BYTES_PER_PIXEL,
+                            available / 1e9));
+        }
         b.setResolution(nX, nY);
         if (r.antiAliasing() != null) b.setSamplingConfig(sampling(rp.field("antiAliasing"), r.antiAliasing()));
-        if (r.threads() != null) core(rp.field("threads"), () -> b.setThreads(r.threads()));
+        if (r.threads() != null) {
+            int threads = r.threads(), cap = maxThreads();
+            if (threads > cap) {
+                warnings.add(file + ": " + rp.field("threads") + ": " + threads + " threads capped at " + cap + " (4 x "
+                        + Runtime.getRuntime().availableProcessors() + " cores; more only add switching, and the"
+                        + " image is the same for any count)");
+                threads = cap;
+            }
+            int chosen = threads;
+            core(rp.field("threads"), () -> b.setThreads(chosen));
+        }
         RenderSettings settings = RenderSettings.DEFAULT;
         if (r.bvh() != null) settings = settings.withBvh(r.bvh());
         if (r.maxLevel() != null) {
@@ -406,6 +465,7 @@ final class SceneBuilder {
         if (!Files.exists(path)) {
             throw fail(fileAt, "OBJ file \"" + name + "\" not found (looked for " + path + ")");
         }
+        confine(fileAt, "OBJ file", name, path);
         ObjMesh obj;
         try {
             obj = ObjReader.read(path, displayName(name));
@@ -424,6 +484,32 @@ final class SceneBuilder {
         }
         boolean smooth = m.smooth() == null || m.smooth();
         return core(at, () -> new Mesh(v, obj.indices(), smooth ? obj.normals() : null));
+    }
+
+    /**
+     * Refuses a referenced file that resolves, after following links, outside the scene file's folder tree and the
+     * folders the user allowed: a scene file from someone else must not read other files of the machine.
+     */
+    private void confine(JsonPath at, String kind, String name, Path path) throws SceneFileException {
+        Path real;
+        try {
+            real = path.toRealPath();
+        } catch (java.io.IOException | SecurityException e) {
+            throw fail(
+                    at,
+                    kind + " \"" + Printable.of(name) + "\" cannot be resolved: "
+                            + e.getClass().getSimpleName());
+        }
+        for (Path folder : allowedFolders) {
+            if (real.startsWith(folder)) return;
+        }
+        throw fail(
+                at,
+                kind + " \"" + Printable.of(name) + "\" resolves to " + Printable.of(real.toString())
+                        + ", outside the scene file's folder "
+                        + Printable.of(allowedFolders.get(0).toString())
+                        + "; referenced files must lie in that folder tree (the command line's --allow-path DIR, or"
+                        + " SceneLoader's allowed folders, widen it)");
     }
 
     /** An OBJ path as the user sees it: beside the scene file's name (e.g. scenes/models/cube.obj). */

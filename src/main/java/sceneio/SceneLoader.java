@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.function.Supplier;
 import sceneio.model.SceneDocument;
 
@@ -24,13 +25,25 @@ import sceneio.model.SceneDocument;
  * }</pre>
  */
 public final class SceneLoader {
+    /** Largest scene file read: 64 MiB (a scene holds meshes by reference, in OBJ files). */
+    public static final int MAX_SCENE_BYTES = 64 << 20;
+
     private SceneLoader() {}
 
-    /** Reads and builds a scene file; OBJ paths are relative to its folder. */
+    /**
+     * Reads and builds a scene file; OBJ paths are relative to its folder, and must resolve (links followed) inside
+     * its folder tree.
+     */
     public static LoadedScene load(Path file) throws SceneFileException {
+        return load(file, List.of());
+    }
+
+    /** {@link #load(Path)}, with files referenced from the scene allowed in {@code allowedFolders} too. */
+    public static LoadedScene load(Path file, List<Path> allowedFolders) throws SceneFileException {
         String text = text(file);
         SceneDocument document = parse(text, file.toString());
-        return build(document, file.toString(), baseDir(file), text);
+        return new SceneBuilder(file.toString(), baseDir(file), () -> text, allowedFolders)
+                .build(document, sceneName(file.toString()));
     }
 
     /**
@@ -38,6 +51,12 @@ public final class SceneLoader {
      * folder, and the file is read again only on error, to give the message a line and column.
      */
     public static LoadedScene build(SceneDocument document, Path file) throws SceneFileException {
+        return build(document, file, List.of());
+    }
+
+    /** {@link #build(SceneDocument, Path)}, with referenced files allowed in {@code allowedFolders} too. */
+    public static LoadedScene build(SceneDocument document, Path file, List<Path> allowedFolders)
+            throws SceneFileException {
         Supplier<String> text = () -> {
             try {
                 return Files.readString(file);
@@ -45,7 +64,8 @@ public final class SceneLoader {
                 return null; // the message then gives the JSON path alone
             }
         };
-        return new SceneBuilder(file.toString(), baseDir(file), text).build(document, sceneName(file.toString()));
+        return new SceneBuilder(file.toString(), baseDir(file), text, allowedFolders)
+                .build(document, sceneName(file.toString()));
     }
 
     /** Reads a scene file into a document without building it (to change it, or to write it back). */
@@ -55,6 +75,17 @@ public final class SceneLoader {
 
     /** Parses scene JSON; {@code name} names it in messages. */
     public static SceneDocument parse(String json, String name) throws SceneFileException {
+        String start = json.stripLeading();
+        if (!start.isEmpty() && start.charAt(0) != '{' && start.charAt(0) != '/') {
+            // Not JSON at all (nor a comment before it): say so without quoting it, it may be any file.
+            throw new SceneFileException(
+                    name,
+                    0,
+                    0,
+                    null,
+                    "is not a JSON scene file: a scene file holds one JSON object, starting with '{'",
+                    null);
+        }
         SceneDocument document;
         try {
             document = SceneJson.MAPPER.readValue(json, SceneDocument.class);
@@ -77,7 +108,8 @@ public final class SceneLoader {
      */
     public static LoadedScene build(SceneDocument document, String name, Path baseDir, String text)
             throws SceneFileException {
-        return new SceneBuilder(name, baseDir, text == null ? null : () -> text).build(document, sceneName(name));
+        return new SceneBuilder(name, baseDir, text == null ? null : () -> text, List.of())
+                .build(document, sceneName(name));
     }
 
     /** Parses and builds scene JSON held in a string; OBJ paths are relative to {@code baseDir}. */
@@ -95,8 +127,30 @@ public final class SceneLoader {
         if (Files.isDirectory(file)) {
             throw new SceneFileException(name, 0, 0, null, "is a folder, not a " + kind, null);
         }
+        if (Files.exists(file) && !Files.isRegularFile(file)) {
+            // A device or a pipe (/dev/zero, /dev/stdin) has no size to check and may never end.
+            throw new SceneFileException(name, 0, 0, null, "is not a regular file, so it cannot be a " + kind, null);
+        }
         try {
-            byte[] bytes = Files.readAllBytes(file);
+            long size = Files.size(file);
+            if (size > MAX_SCENE_BYTES) {
+                throw new SceneFileException(
+                        name,
+                        0,
+                        0,
+                        null,
+                        "is " + size + " bytes; a " + kind + " may have at most " + MAX_SCENE_BYTES
+                                + " bytes (64 MiB: meshes belong in OBJ files)",
+                        null);
+            }
+            byte[] bytes;
+            try (var in = Files.newInputStream(file)) {
+                // Bounded even if the file grows while it is read.
+                bytes = in.readNBytes(MAX_SCENE_BYTES + 1);
+            }
+            if (bytes.length > MAX_SCENE_BYTES) {
+                throw new SceneFileException(name, 0, 0, null, "grew beyond " + MAX_SCENE_BYTES + " bytes", null);
+            }
             // Strict UTF-8: a file in another encoding is reported instead of being read as garbage.
             return StandardCharsets.UTF_8
                     .newDecoder()

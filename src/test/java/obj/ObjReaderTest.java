@@ -121,7 +121,8 @@ class ObjReaderTest {
             {"v 0 0 0\nf 1 a 1\n", "2: face corner 'a': vertex index 'a' is not an integer"},
             {"v 0 0 0\nf 1/1/1/1 1 1\n", "2: face corner '1/1/1/1' must be v, v/vt, v//vn or v/vt/vn"},
             {"v 0 0 0\nf /1 1 1\n", "2: face corner '/1' must be v, v/vt, v//vn or v/vt/vn"},
-            {"1.0 2.0 3.0\n", "1: '1.0' is not an OBJ statement"},
+            {"1.0 2.0 3.0\n", "1: does not start like an OBJ file"},
+            {"v 0 0 0\n1.0 2.0 3.0\n", "2: '1.0' is not an OBJ statement"},
             {"# only a comment\n", ": has no faces ('f' lines): a mesh needs at least one triangle"},
         };
         for (String[] c : cases) {

@@ -1,0 +1,173 @@
+package cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Scene files from strangers, through the command line (docs/CLI.md, "Security model"): every case ends with exit
+ * code 2 and one clear line, or renders correctly where the input is legal; nothing is written outside the output
+ * path; no content of a file that is not a valid input is quoted; control characters never reach the terminal.
+ */
+class UntrustedSceneTest {
+    private static final String CAMERA = "\"camera\": {\"location\": [0, -10, 0], \"lookAt\": [0, 0, 0],"
+            + " \"vpDistance\": 10, \"vpWidth\": 4, \"vpHeight\": 4}";
+    private static final String SECRET = "root:x:0:0:SECRET-CONTENT:/root:/bin/bash\n";
+
+    @TempDir
+    Path dir;
+
+    private record Result(int code, String out, String err) {}
+
+    private Result render(String json, String... extra) throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Path scene = Files.writeString(scenes.resolve("scene.json"), json);
+        String[] args = Stream.concat(Stream.of("render", scene.toString(), "-q"), Stream.of(extra))
+                .toArray(String[]::new);
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = RaytracerCli.run(args, new PrintWriter(out, true), new PrintWriter(err, true));
+        return new Result(code, out.toString(), err.toString());
+    }
+
+    private static String scene(String render, String geometries) {
+        return "{" + CAMERA + ", \"render\": {" + render + "}, \"geometries\": [" + geometries + "]}";
+    }
+
+    private static void assertBadInput(Result r, String expected) {
+        assertEquals(ExitCodes.BAD_INPUT, r.code(), r.err());
+        assertTrue(r.err().startsWith("error: "), r.err());
+        assertEquals(1, r.err().strip().lines().count(), "one line: " + r.err());
+        assertTrue(r.err().contains(expected), "expected '" + expected + "' in: " + r.err());
+        assertFalse(r.err().contains("SECRET"), "file content quoted: " + r.err());
+        assertTrue(r.err().chars().noneMatch(c -> c < 0x20 && c != '\n'), "control characters: " + r.err());
+    }
+
+    @Test
+    void aSceneNameCannotSendTheDefaultOutputElsewhere() throws IOException {
+        Path cwd = Path.of("").toAbsolutePath();
+        for (String name : List.of("../../x", "a/b", "..", ".hidden", "nul\u0000here", "esc\u001b[31mred", "")) {
+            String json = "{\"name\": \"" + name.replace("\u0000", "\\u0000").replace("\u001b", "\\u001b") + "\", "
+                    + scene("\"width\": 2, \"height\": 2", "").substring(1);
+            Result r = render(json);
+            assertBadInput(r, name.isEmpty() ? "" : "scene name");
+            assertFalse(Files.exists(cwd.resolve("../x.png").normalize()), "nothing written above images/");
+        }
+    }
+
+    @Test
+    void referencedFilesMustStayInTheScenesFolderTree() throws IOException {
+        Path outside = Files.writeString(dir.resolve("passwd"), SECRET);
+        Path obj = Files.writeString(dir.resolve("cube.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        Files.createDirectories(dir.resolve("scenes"));
+        Path link = dir.resolve("scenes/link.obj");
+        Files.createSymbolicLink(link, obj);
+        for (String file : List.of("../passwd", "../cube.obj", "link.obj", "../../../../../../etc/hostname")) {
+            Result r = render(scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"" + file + "\"}"));
+            assertBadInput(r, file.endsWith("hostname") && !Files.exists(Path.of("/etc/hostname")) ? "" : "outside");
+        }
+        // --allow-path widens it: the linked mesh renders.
+        Path png = dir.resolve("ok.png");
+        Result allowed = render(
+                scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"link.obj\"}"),
+                "--allow-path",
+                dir.toString(),
+                "-o",
+                png.toString());
+        assertEquals(ExitCodes.OK, allowed.code(), allowed.err());
+        assertTrue(Files.exists(png));
+        assertTrue(Files.exists(outside));
+    }
+
+    @Test
+    void aFileThatIsNotAnObjIsNotQuoted() throws IOException {
+        Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(dir.resolve("scenes/secret.obj"), SECRET);
+        Files.writeString(dir.resolve("scenes/escape.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \u001b[2J\n");
+        Result secret = render(scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"secret.obj\"}"));
+        assertBadInput(secret, "does not start like an OBJ file");
+        Result escape = render(scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"escape.obj\"}"));
+        assertBadInput(escape, "\\u001b");
+    }
+
+    @Test
+    void aSceneFileThatIsNotJsonIsNotQuoted() throws IOException {
+        assertBadInput(render(SECRET), "is not a JSON scene file");
+        // A raw ESC is malformed JSON; an escaped one in a key reaches the message, escaped again.
+        assertBadInput(render("{\"na\u001bme\": 1}"), "malformed JSON");
+        assertBadInput(render("{\"na\\u001bme\": 1}"), "unknown field \"na\\u001bme\"");
+    }
+
+    @Test
+    void devicesAndHugeFilesAreRefusedBeforeReading() throws IOException {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        if (Files.exists(Path.of("/dev/zero"))) {
+            int code = RaytracerCli.run(
+                    new String[] {"render", "/dev/zero"}, new PrintWriter(out, true), new PrintWriter(err, true));
+            assertEquals(ExitCodes.BAD_INPUT, code, err.toString());
+            assertTrue(err.toString().contains("not a regular file"), err.toString());
+        }
+        Files.createDirectories(dir.resolve("scenes"));
+        Path noLines = dir.resolve("scenes/long.obj");
+        Files.writeString(noLines, "v" + " 1".repeat(40_000) + "\n");
+        Result r = render(scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"long.obj\"}"));
+        assertBadInput(r, "line longer than 65536 characters");
+    }
+
+    @Test
+    void resourceLimitsAreCheckedBeforeAnyWork() throws IOException {
+        assertBadInput(
+                render(scene("\"width\": 2, \"height\": 2, \"maxLevel\": 1000", "")), "maxLevel must be in [1, 256]");
+        assertBadInput(
+                render(scene("\"width\": 16384, \"height\": 16384", "")),
+                Runtime.getRuntime().maxMemory() < 16384L * 16384 * 28 ? "needs about 7.5 GB of memory" : "");
+        Result lights = render("{" + CAMERA + ", \"render\": {\"width\": 2, \"height\": 2}, \"lights\": [{\"type\":"
+                + " \"point\", \"position\": [0, 0, 5], \"color\": [1, 1, 1], \"radius\": 1, \"samples\":"
+                + " 1000000000}]}");
+        assertBadInput(lights, "must be in [1, 1048576]");
+    }
+
+    @Test
+    void tooManyThreadsAreCappedWithAWarning() throws IOException {
+        Path png = dir.resolve("t.png");
+        Result r = render(scene("\"width\": 4, \"height\": 4, \"threads\": 3000", ""), "-o", png.toString());
+        assertEquals(ExitCodes.OK, r.code(), r.err());
+        assertTrue(
+                r.err()
+                        .contains("3000 threads capped at "
+                                + 4 * Runtime.getRuntime().availableProcessors()),
+                r.err());
+    }
+
+    @Test
+    void twoPerfectMirrorsAtTheDeepestLevelRender() throws IOException {
+        String mirrors =
+                "{\"type\": \"plane\", \"point\": [0, 0, -1], \"normal\": [0, 0, 1], \"material\": {\"kR\": 1}},"
+                        + " {\"type\": \"plane\", \"point\": [0, 0, 1], \"normal\": [0, 0, 1], \"material\": {\"kR\": 1}}";
+        String json = "{\"camera\": {\"location\": [0, 0, 0], \"direction\": [0.001, 0, 1], \"up\": [1, 0, 0],"
+                + " \"vpDistance\": 1, \"vpWidth\": 1, \"vpHeight\": 1}, \"render\": {\"width\": 4, \"height\": 4,"
+                + " \"maxLevel\": 256, \"threads\": 1}, \"geometries\": [" + mirrors + "]}";
+        Path png = dir.resolve("mirrors.png");
+        Result r = render(json, "-o", png.toString());
+        assertEquals(ExitCodes.OK, r.code(), r.err());
+        assertTrue(Files.exists(png));
+    }
+
+    @Test
+    void negativeBenchmarkRunsAreBadInput() {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = RaytracerCli.run(
+                new String[] {"benchmark", "planning", "-5"}, new PrintWriter(out, true), new PrintWriter(err, true));
+        assertEquals(ExitCodes.BAD_INPUT, code, err.toString());
+        assertTrue(err.toString().contains("runs must be in [1, 1000], but was -5"), err.toString());
+    }
+}
