@@ -48,6 +48,10 @@ public final class OutputFile {
         if (!name.toLowerCase(Locale.ROOT).endsWith(".png") || name.length() <= 4) {
             throw new BadInputException("output " + file + ": must be a .png file name, e.g. images/scene.png");
         }
+        if (name.getBytes(java.nio.charset.StandardCharsets.UTF_8).length > 255) {
+            throw new BadInputException("output " + primitives.Printable.of(file.toString())
+                    + ": the file name is longer than 255 bytes, the most file systems allow");
+        }
         if (Files.isDirectory(file)) {
             throw new BadInputException("output " + file + ": is a folder; give a .png file name inside it");
         }

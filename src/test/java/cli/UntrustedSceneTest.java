@@ -163,6 +163,19 @@ class UntrustedSceneTest {
     }
 
     @Test
+    void outputNamesThatNoFileSystemTakesAreRefusedBeforeRendering() throws IOException {
+        Result r = render(
+                scene("\"width\": 2, \"height\": 2", ""),
+                "-o",
+                dir.resolve("x".repeat(252) + ".png").toString());
+        assertBadInput(r, "longer than 255 bytes");
+        Path fits = dir.resolve("y".repeat(251) + ".png"); // 255 characters: renders, through a short temporary name
+        Result ok = render(scene("\"width\": 2, \"height\": 2", ""), "-o", fits.toString());
+        assertEquals(ExitCodes.OK, ok.code(), ok.err());
+        assertTrue(Files.exists(fits));
+    }
+
+    @Test
     void negativeBenchmarkRunsAreBadInput() {
         StringWriter out = new StringWriter(), err = new StringWriter();
         int code = RaytracerCli.run(
