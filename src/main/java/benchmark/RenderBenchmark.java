@@ -25,7 +25,7 @@ import sceneio.model.SceneDocument;
 /**
  * What a real render costs, scene by scene: the street (hard lamps, and the main job's settings with soft lamps),
  * the showcase and the glass-and-mirror scene at fixed sizes, on 1 and 2 threads, each the median of several
- * renders after a warm-up. Per row: wall and CPU time, rays by kind, rays per CPU-second, BVH nodes and primitive
+ * renders after a warm-up. Per row: wall time, CPU time of the rendering threads, rays by kind, rays per CPU-second, BVH nodes and primitive
  * tests per ray, and bytes allocated per ray (by the rendering thread, on 1 thread).
  *
  * <p>{@code --csv FILE} saves the figures (and, with {@code --images DIR}, the 8-bit images); {@code --baseline
@@ -250,20 +250,30 @@ public final class RenderBenchmark {
 
     private static Row measure(Scenario s, int runs, Double lightCutoff, Path images) throws IOException {
         var threadBean = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-        var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         render(s, lightCutoff); // warm-up: class loading and JIT
         Row[] rows = new Row[runs];
         Camera last = null;
         for (int i = 0; i < runs; i++) {
-            long cpu0 = s.threads() == 1 ? threadBean.getCurrentThreadCpuTime() : os.getProcessCpuTime();
-            long bytes0 = threadBean.getCurrentThreadAllocatedBytes();
-            Camera c = render(s, lightCutoff);
-            long bytes = threadBean.getCurrentThreadAllocatedBytes() - bytes0;
-            long cpu = (s.threads() == 1 ? threadBean.getCurrentThreadCpuTime() : os.getProcessCpuTime()) - cpu0;
+            // CPU time and allocation of the threads that render, read on each of them as it finishes a tile (the
+            // renderer may run on the calling thread, as older builds did, or on threads of its own).
+            Map<Thread, long[]> counters = new java.util.concurrent.ConcurrentHashMap<>();
+            Thread caller = Thread.currentThread();
+            long cpu0 = threadBean.getCurrentThreadCpuTime(), bytes0 = threadBean.getCurrentThreadAllocatedBytes();
+            Camera c = render(s, lightCutoff, (done, all) -> {
+                long[] v = counters.computeIfAbsent(Thread.currentThread(), t -> new long[2]);
+                v[0] = threadBean.getCurrentThreadCpuTime();
+                v[1] = threadBean.getCurrentThreadAllocatedBytes();
+            });
+            long cpu = 0, bytes = 0;
+            for (Map.Entry<Thread, long[]> e : counters.entrySet()) {
+                boolean isCaller = e.getKey() == caller;
+                cpu += e.getValue()[0] - (isCaller ? cpu0 : 0);
+                bytes += e.getValue()[1] - (isCaller ? bytes0 : 0);
+            }
             RenderStatistics st = c.getLastStatistics();
             var rays = st.rays();
             long total = rays.total();
-            // On one thread the calling thread renders everything; the camera is built outside this window.
+            // On one thread one thread renders everything (the camera is built before it starts).
             double perRay = s.threads() == 1 ? bytes / (double) total : Double.NaN;
             rows[i] = new Row(
                     s.key(),
@@ -303,7 +313,12 @@ public final class RenderBenchmark {
     }
 
     private static Camera render(Scenario s, Double lightCutoff) {
+        return render(s, lightCutoff, null);
+    }
+
+    private static Camera render(Scenario s, Double lightCutoff, renderer.ProgressListener listener) {
         Camera c = s.camera().apply(s.threads());
+        if (listener != null) c.setProgressListener(listener);
         if (lightCutoff != null) {
             try {
                 RenderSettings settings = (RenderSettings) RenderSettings.class
