@@ -2,6 +2,7 @@ package distributed;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -45,8 +46,8 @@ class SceneBundleTest {
         assertEquals(24, bundle.width());
         assertEquals(16, bundle.height());
         // The executor has no copy of the files: delete them before loading the bundle.
-        Files.delete(dir.resolve("models/icosphere.obj"));
-        Files.delete(dir.resolve("models/cube.obj"));
+        Files.delete(dir.resolve("scene/models/icosphere.obj"));
+        Files.delete(dir.resolve("scene/models/cube.obj"));
         Files.delete(scene);
         ImageWriter remote = travel(bundle)
                 .load(UnaryOperator.identity())
@@ -75,5 +76,15 @@ class SceneBundleTest {
                 assertThrows(SceneFileException.class, () -> SceneLoader.load(scene))
                         .getMessage(),
                 e.getMessage());
+    }
+
+    /** A scene from someone else cannot ship files from outside its folder tree to the cluster (docs/CLI.md). */
+    @Test
+    void aSceneNamingFilesOutsideItsFolderIsRefusedOnTheDriver() throws Exception {
+        Path scene = TestScenes.softShadows(dir, 8, 8);
+        Files.writeString(scene, Files.readString(scene).replace("\"models/", "\"../../models/"));
+        Files.createDirectories(dir.resolveSibling("models"));
+        SceneFileException e = assertThrows(SceneFileException.class, () -> SceneBundle.read(scene));
+        assertTrue(e.getMessage().contains("not found") || e.getMessage().contains("outside"), e.getMessage());
     }
 }

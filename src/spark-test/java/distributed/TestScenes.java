@@ -14,17 +14,17 @@ final class TestScenes {
     private TestScenes() {}
 
     /**
-     * scenes/soft-shadows.json at {@code width x height}, with its OBJ meshes in a sibling folder
-     * ({@code scene/soft.json} names {@code ../models/*.obj}), so the scene travels with files from outside its
-     * own folder. Random sampling everywhere: jittered anti-aliasing and adaptive soft shadows.
+     * scenes/soft-shadows.json at {@code width x height}, with its OBJ meshes in a subfolder ({@code scene/soft.json}
+     * names {@code models/*.obj}), so the scene travels with files of its own folder tree (files outside it are
+     * refused, docs/CLI.md, "Security model"). Random sampling everywhere: jittered anti-aliasing and adaptive soft
+     * shadows.
      */
     static Path softShadows(Path dir, int width, int height) throws IOException {
-        Path models = Files.createDirectories(dir.resolve("models"));
+        Path models = Files.createDirectories(dir.resolve("scene/models"));
         for (String obj : List.of("icosphere.obj", "cube.obj")) {
             Files.copy(Path.of("scenes/models", obj), models.resolve(obj));
         }
         String text = Files.readString(Path.of("scenes/soft-shadows.json"))
-                .replace("\"models/", "\"../models/")
                 .replace("\"width\": 480", "\"width\": " + width)
                 .replace("\"height\": 320", "\"height\": " + height)
                 .replace("\"samples\": 36", "\"samples\": 9");
