@@ -194,7 +194,8 @@ public final class BVH {
      * @param bins number of SAH bins per node, 2..256
      * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
      * @return the new BVH
-     * @throws IllegalArgumentException if {@code bins} or {@code maxLeafSize} is out of range
+     * @throws IllegalArgumentException if {@code bins} or {@code maxLeafSize} is out of range, or the bounds are empty or
+     *     not six values per primitive
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
         return build(primitiveBounds, bins, maxLeafSize, true);
