@@ -26,6 +26,13 @@ import renderer.sampling.TargetShape;
 public final class FeatureGallery {
     private FeatureGallery() {}
 
+    /**
+     * Renders the effect pictures and prints the cost table.
+     *
+     * @param args optionally {@code runs width height}: timed runs per figure (1 to 1000, default 3) and image size
+     *     (default 400 x 250)
+     * @throws IllegalArgumentException if the run count or the size is out of range
+     */
     public static void main(String[] args) {
         int runs = args.length > 0 ? Integer.parseInt(args[0]) : 3;
         int width = args.length > 1 ? Integer.parseInt(args[1]) : 400;

@@ -25,6 +25,11 @@ import scene.Scene;
 public final class Showcase {
     private Showcase() {}
 
+    /**
+     * Renders the showcase at 800 x 500 with 9 jittered samples per pixel.
+     *
+     * @param args ignored
+     */
     public static void main(String[] args) {
         Camera camera = camera(scene(), 800, 500)
                 .setSamplingConfig(new SamplingConfig(9, TargetShape.RECTANGLE, SamplingPattern.JITTERED))
@@ -34,7 +39,14 @@ public final class Showcase {
         System.out.print(camera.getLastStatistics().format());
     }
 
-    /** The showcase view of {@code scene} at the given resolution (16:10). */
+    /**
+     * The showcase view of {@code scene} at the given resolution (16:10).
+     *
+     * @param scene the scene to view
+     * @param width image width in pixels
+     * @param height image height in pixels
+     * @return a camera builder with location, direction, view plane, resolution and ray tracer set
+     */
     public static Camera.Builder camera(Scene scene, int width, int height) {
         return Camera.getBuilder()
                 .setLocation(new Point(0, -420, 160))
@@ -45,7 +57,11 @@ public final class Showcase {
                 .setRayTracer(scene, RayTracerType.SIMPLE);
     }
 
-    /** Glass and mirror spheres, a capped cylinder, a mirror wall and a triangle on a floor, under soft lights. */
+    /**
+     * Glass and mirror spheres, a capped cylinder, a mirror wall and a triangle on a floor, under soft lights.
+     *
+     * @return a new showcase scene with soft lights and a clear floor reflection
+     */
     public static Scene scene() {
         return scene(true, 0);
     }
@@ -53,6 +69,10 @@ public final class Showcase {
     /**
      * The showcase scene with its lights soft (radius and 16 samples) or hard, and the floor's roughness (0 is a
      * clear reflection, larger values a glossy one).
+     *
+     * @param softLights true for disk lights of 16 samples, false for point lights
+     * @param floorRoughness the floor's roughness, at least 0
+     * @return a new showcase scene
      */
     public static Scene scene(boolean softLights, double floorRoughness) {
         Scene scene = new Scene("showcase")

@@ -11,6 +11,14 @@ public record StreetOptions(double lampRadius, int lampSamples) {
     /** Point lamps: hard shadows. */
     public static final StreetOptions HARD = new StreetOptions(0, 1);
 
+    /**
+     * Checks the lamp settings.
+     *
+     * @param lampRadius the radius of the lamps' disks, finite and at least 0 (0: point lamps)
+     * @param lampSamples shadow rays per lamp, at least 1
+     * @throws IllegalArgumentException if {@code lampRadius} is negative or not finite, or {@code lampSamples} is below
+     *     1
+     */
     public StreetOptions {
         if (!(lampRadius >= 0) || !Double.isFinite(lampRadius)) {
             throw new IllegalArgumentException("lampRadius must be finite and >= 0, but was " + lampRadius);
@@ -18,12 +26,22 @@ public record StreetOptions(double lampRadius, int lampSamples) {
         if (lampSamples < 1) throw new IllegalArgumentException("lampSamples must be >= 1, but was " + lampSamples);
     }
 
-    /** Disk lamps of the given radius sampled by {@code samples} shadow rays each: soft shadows. */
+    /**
+     * Disk lamps of the given radius sampled by {@code samples} shadow rays each: soft shadows.
+     *
+     * @param radius the disk radius in scene units
+     * @param samples shadow rays per lamp and shading point
+     * @return the options
+     */
     public static StreetOptions soft(double radius, int samples) {
         return new StreetOptions(radius, samples);
     }
 
-    /** Whether the lamps cast soft shadows. */
+    /**
+     * Whether the lamps cast soft shadows.
+     *
+     * @return true when the radius is positive and more than one sample is taken
+     */
     public boolean softShadows() {
         return lampRadius > 0 && lampSamples > 1;
     }

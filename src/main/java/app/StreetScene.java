@@ -44,7 +44,9 @@ public final class StreetScene {
     /** Where the camera stands, what it looks at, and its view-plane distance and width (height follows the image). */
     public static final Point CAMERA_LOCATION = new Point(-30, -420, 85);
 
+    /** The point the camera looks at. */
     public static final Point CAMERA_TARGET = new Point(5, 1200, 150);
+    /** The view plane's distance from the camera and its width, in scene units. */
     public static final double VP_DISTANCE = 300, VP_WIDTH = 320;
 
     /** Half-width of the road; the kerb stones and sidewalks run outward from it to the house fronts. */
@@ -72,7 +74,11 @@ public final class StreetScene {
     private final Random random = new Random(20240917L);
     private Sphere moon;
 
-    /** Builds the street with the given lamp settings. */
+    /**
+     * Builds the street with the given lamp settings.
+     *
+     * @param options the lamps' radius and samples
+     */
     public StreetScene(StreetOptions options) {
         this.options = options;
         this.scene = new Scene("street")
@@ -96,6 +102,8 @@ public final class StreetScene {
      * Renders the street into {@code images/street-render.png}: {@code [width height aaSamples shadowSamples
      * adaptive]}, by default 800 500 1 1 false. Anti-aliasing is a GRID over the pixel; shadow samples above 1 make
      * every lamp a disk of radius 10; {@code adaptive} refines both only where samples disagree.
+     *
+     * @param args optionally {@code width height aaSamples shadowSamples adaptive}
      */
     public static void main(String[] args) {
         int width = args.length > 0 ? Integer.parseInt(args[0]) : 800;
@@ -114,16 +122,31 @@ public final class StreetScene {
         System.out.print(camera.getLastStatistics().format());
     }
 
-    /** The scene (build a new StreetScene for an independent copy). */
+    /**
+     * The scene (build a new StreetScene for an independent copy).
+     *
+     * @return the scene, shared: changing it changes this street
+     */
     public Scene scene() {
         return scene;
     }
 
+    /**
+     * The lamp settings the street was built with.
+     *
+     * @return the options given to the constructor
+     */
     public StreetOptions options() {
         return options;
     }
 
-    /** The view down the street at the given resolution; the view plane takes the image's aspect ratio. */
+    /**
+     * The view down the street at the given resolution; the view plane takes the image's aspect ratio.
+     *
+     * @param width image width in pixels
+     * @param height image height in pixels
+     * @return a camera builder with location, direction, view plane, resolution and ray tracer set
+     */
     public Camera.Builder camera(int width, int height) {
         return Camera.getBuilder()
                 .setLocation(CAMERA_LOCATION)
@@ -134,7 +157,11 @@ public final class StreetScene {
                 .setRayTracer(scene, RayTracerType.SIMPLE);
     }
 
-    /** The glowing glass globes of the street lamps, each with its centre. */
+    /**
+     * The glowing glass globes of the street lamps, each with its centre.
+     *
+     * @return an unmodifiable list of the lamp globes
+     */
     public List<Landmark> lampGlobes() {
         return Collections.unmodifiableList(lampGlobes);
     }
@@ -142,12 +169,18 @@ public final class StreetScene {
     /**
      * The lit windows, shop windows and the advert (emissive polygons), each with the centre of a pane clear of the
      * glazing bars.
+     *
+     * @return an unmodifiable list of the lit windows
      */
     public List<Landmark> litWindows() {
         return Collections.unmodifiableList(litWindows);
     }
 
-    /** The moon: an emissive sphere far away, above the end of the street. */
+    /**
+     * The moon: an emissive sphere far away, above the end of the street.
+     *
+     * @return the moon sphere
+     */
     public Sphere moon() {
         return moon;
     }
@@ -155,6 +188,8 @@ public final class StreetScene {
     /**
      * Primitives the renderer works with: triangles of meshes and polygon fans counted one by one, plus spheres,
      * cylinders and planes.
+     *
+     * @return the number of primitives
      */
     public int primitiveCount() {
         Accelerator flat = Accelerator.build(scene.geometries, false);

@@ -16,6 +16,11 @@ public final class BenchmarkScenes {
      * {@code spheres} spheres and {@code quads} randomly oriented square polygons scattered over a
      * 40 x 40 x 10 block (seeded, so every call builds the same scene): a typical hand-built scene of a few
      * hundred primitives.
+     *
+     * @param spheres the number of spheres, radius 0.3 to 1
+     * @param quads the number of square polygons, half side 0.4 to 1.6
+     * @param seed the random seed of positions, sizes and orientations
+     * @return a new group of the spheres and polygons
      */
     public static Intersectable spheresAndPolygons(int spheres, int quads, long seed) {
         SplittableRandom random = new SplittableRandom(seed);

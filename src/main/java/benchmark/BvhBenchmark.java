@@ -89,6 +89,13 @@ public final class BvhBenchmark {
         this.only = only;
     }
 
+    /**
+     * Runs the benchmark and prints the table.
+     *
+     * @param args options as {@code key=value}: {@code runs=N} (1 to 1000), {@code threads=1,2,...} (each 1 to 256),
+     *     {@code only=name,...}
+     * @throws IllegalArgumentException if an option is unknown or out of range
+     */
     public static void main(String[] args) {
         int runs = 5;
         int cores = Runtime.getRuntime().availableProcessors();

@@ -33,6 +33,12 @@ import scene.Scene;
 public final class PlanningBenchmark {
     private PlanningBenchmark() {}
 
+    /**
+     * Runs the benchmark and prints the table.
+     *
+     * @param args optionally the number of timed runs per figure, 1 to 1000 (default 5)
+     * @throws IllegalArgumentException if the run count is out of range
+     */
     public static void main(String[] args) {
         int runs = args.length > 0 ? Integer.parseInt(args[0]) : 5;
         if (runs < 1 || runs > 1000) throw new IllegalArgumentException("runs must be in [1, 1000], but was " + runs);

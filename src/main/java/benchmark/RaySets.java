@@ -13,6 +13,14 @@ public final class RaySets {
     /**
      * One ray through the centre of each pixel of a {@code width x height} pinhole camera with the given
      * vertical field of view, in scanline order (the order a renderer's tiles would trace them).
+     *
+     * @param eye the camera position, origin of every ray
+     * @param target the point at the image centre
+     * @param up the approximate up direction; must not be parallel to {@code target - eye}
+     * @param verticalFovDegrees the vertical field of view in degrees, between 0 and 180 exclusive
+     * @param width the number of pixel columns
+     * @param height the number of pixel rows
+     * @return {@code width * height} rays, row by row from the top
      */
     public static Ray[] pinhole(Point eye, Point target, Vector up, double verticalFovDegrees, int width, int height) {
         Vector forward = target.subtract(eye).normalize();
@@ -35,7 +43,14 @@ public final class RaySets {
         return rays;
     }
 
-    /** {@code count} rays with origins uniform in {@code box} and directions uniform on the unit sphere. */
+    /**
+     * {@code count} rays with origins uniform in {@code box} and directions uniform on the unit sphere.
+     *
+     * @param box the box the origins are drawn from
+     * @param count the number of rays
+     * @param seed the random seed
+     * @return {@code count} new rays
+     */
     public static Ray[] incoherent(BoundingBox box, int count, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         Ray[] rays = new Ray[count];
@@ -53,7 +68,13 @@ public final class RaySets {
         return rays;
     }
 
-    /** Every {@code stride}-th ray: an evenly spread sample for the slow brute-force search. */
+    /**
+     * Every {@code stride}-th ray: an evenly spread sample for the slow brute-force search.
+     *
+     * @param rays the rays to sample from
+     * @param stride the step between sampled rays, at least 1
+     * @return the rays at indices 0, {@code stride}, {@code 2 * stride}, ...
+     */
     public static Ray[] sample(Ray[] rays, int stride) {
         Ray[] sample = new Ray[(rays.length + stride - 1) / stride];
         for (int i = 0; i < sample.length; i++) sample[i] = rays[i * stride];

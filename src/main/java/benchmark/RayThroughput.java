@@ -24,7 +24,14 @@ public final class RayThroughput {
      */
     public record Pass(double seconds, double cpuSeconds, long hits, long nodeVisits, long primitiveTests) {}
 
-    /** Traces all rays once with {@code threads} workers. */
+    /**
+     * Traces all rays once with {@code threads} workers.
+     *
+     * @param accelerator the scene search to time
+     * @param rays the rays to trace, each searched for its closest hit
+     * @param threads the number of worker threads, at least 1
+     * @return the wall and CPU time of the pass and its counts
+     */
     public static Pass trace(Accelerator accelerator, Ray[] rays, int threads) {
         AtomicInteger next = new AtomicInteger();
         HitRecord[] records = new HitRecord[threads];
@@ -74,7 +81,13 @@ public final class RayThroughput {
         return hits;
     }
 
-    /** Closest-hit distances of each ray (NaN for a miss), for checking two searches agree. */
+    /**
+     * Closest-hit distances of each ray (NaN for a miss), for checking two searches agree.
+     *
+     * @param accelerator the scene search
+     * @param rays the rays to trace
+     * @return the distance along each ray to its closest hit, or NaN where it misses, in the order of {@code rays}
+     */
     public static double[] distances(Accelerator accelerator, Ray[] rays) {
         HitRecord hit = new HitRecord();
         double[] t = new double[rays.length];

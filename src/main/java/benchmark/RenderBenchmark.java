@@ -102,6 +102,15 @@ public final class RenderBenchmark {
     private static final String CSV_HEADER = "scenario,wall_s,cpu_s,camera,shadow,reflection,refraction,"
             + "node_visits,primitive_tests,bytes_per_ray,image";
 
+    /**
+     * Runs the benchmark and prints the table, optionally writing a CSV file, the images and a comparison with a
+     * baseline.
+     *
+     * @param args options: {@code --runs N}, {@code --threads 1,2}, {@code --only NAME,...}, {@code --csv FILE}, {@code
+     *     --baseline FILE}, {@code --images DIR}, {@code --light-cutoff STEPS}
+     * @throws IOException if the baseline cannot be read or the CSV file or an image cannot be written
+     * @throws IllegalArgumentException if an option is unknown, lacks its value or is out of range
+     */
     public static void main(String[] args) throws IOException {
         int runs = 3;
         List<Integer> threads = List.of(1, 2);

@@ -20,7 +20,15 @@ import primitives.Vector;
  */
 public record Workload(
         String name, Supplier<Intersectable> scene, Point eye, Point target, Vector up, BoundingBox rayBox) {
-    /** A workload whose incoherent rays start in the bounding box of its (bounded) scene. */
+    /**
+     * A workload whose incoherent rays start in the bounding box of its (bounded) scene.
+     *
+     * @param name the workload's name in the table and in {@code only=}
+     * @param scene builds the scene to search
+     * @param eye the position of the pinhole camera of the coherent rays
+     * @param target the point the pinhole camera looks at
+     * @param up the camera's approximate up direction
+     */
     public Workload(String name, Supplier<Intersectable> scene, Point eye, Point target, Vector up) {
         this(name, scene, eye, target, up, null);
     }

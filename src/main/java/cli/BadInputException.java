@@ -5,6 +5,11 @@ package cli;
  * reported as one line and exit code {@link ExitCodes#BAD_INPUT}, before anything is rendered.
  */
 public final class BadInputException extends Exception {
+    /**
+     * An input problem described in one line.
+     *
+     * @param message what is wrong and what is allowed, shown after {@code error: }
+     */
     public BadInputException(String message) {
         super(message);
     }

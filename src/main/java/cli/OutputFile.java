@@ -21,6 +21,11 @@ public final class OutputFile {
      * The default output of a scene rendered without {@code -o}: {@code images/<name>.png}. The name comes from the
      * scene file, so it must be a plain file name: no folder separators, no {@code ..}, no control characters, at
      * most {@value #MAX_NAME_BYTES} bytes; otherwise the user is asked for {@code -o}.
+     *
+     * @param sceneName the scene's name, as given by the scene file; may be null
+     * @return the relative path {@code images/<sceneName>.png}
+     * @throws BadInputException if the name is empty, has a separator or control character, starts with '.' or is too
+     *     long
      */
     public static Path defaultFor(String sceneName) throws BadInputException {
         String problem = null;
@@ -42,7 +47,15 @@ public final class OutputFile {
         return Path.of("images", sceneName + ".png");
     }
 
-    /** The validated target path. */
+    /**
+     * The validated target path.
+     *
+     * @param file the PNG file the user asked for
+     * @param createFolder true to create the file's folder when missing (only for the default {@code images/})
+     * @return {@code file}, unchanged
+     * @throws BadInputException if the name does not end in {@code .png} or is too long, the file is a folder, or its
+     *     folder is missing (and not created), not a folder or not writable
+     */
     public static Path check(Path file, boolean createFolder) throws BadInputException {
         String name = file.getFileName() == null ? "" : file.getFileName().toString();
         if (!name.toLowerCase(Locale.ROOT).endsWith(".png") || name.length() <= 4) {

@@ -38,18 +38,36 @@ public final class RaytracerCli implements Runnable {
         throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required, e.g. render");
     }
 
+    /**
+     * Runs the command line and exits with its code when it is not 0.
+     *
+     * @param args the command-line arguments
+     */
     public static void main(String[] args) {
         int code = run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true));
         // Exit only on failure: on success, returning lets `mvn exec:java` finish normally.
         if (code != ExitCodes.OK) System.exit(code);
     }
 
-    /** Runs the command line and returns its exit code; {@code out} and {@code err} receive its output. */
+    /**
+     * Runs the command line and returns its exit code; {@code out} and {@code err} receive its output.
+     *
+     * @param args the command-line arguments
+     * @param out where normal output goes
+     * @param err where errors go
+     * @return the exit code, one of {@link ExitCodes}
+     */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
         return commandLine(out, err).execute(args);
     }
 
-    /** The configured command line, for tests and for embedding. */
+    /**
+     * The configured command line, for tests and for embedding.
+     *
+     * @param out where normal output goes
+     * @param err where errors go
+     * @return a new command line with the subcommands, configured as by {@link #configure}
+     */
     public static CommandLine commandLine(PrintWriter out, PrintWriter err) {
         return configure(new CommandLine(new RaytracerCli()), out, err);
     }
@@ -58,6 +76,11 @@ public final class RaytracerCli implements Runnable {
      * Gives another command line (e.g. the Spark jobs' in src/spark) the same behaviour as this one: output to
      * {@code out} and {@code err}, enum values in any case, and the same error reporting and exit codes (bad
      * input: one {@code error: ...} line and exit 2; any other failure: exit 1).
+     *
+     * @param cl the command line to configure
+     * @param out where normal output goes
+     * @param err where errors go
+     * @return {@code cl}, configured
      */
     public static CommandLine configure(CommandLine cl, PrintWriter out, PrintWriter err) {
         cl.setOut(out);

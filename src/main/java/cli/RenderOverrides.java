@@ -19,28 +19,35 @@ public final class RenderOverrides implements Serializable {
 
     /** An on/off option value. */
     public enum Switch {
+        /** The option is on. */
         ON,
+        /** The option is off. */
         OFF
     }
 
+    /** {@code --bvh}: whether to search with the BVH, or null to keep the scene's setting. */
     @Option(names = "--bvh", paramLabel = "on|off", description = "use the BVH (default: the scene's, else on)")
     private Switch bvh;
 
+    /** {@code --samples}: anti-aliasing rays per pixel, or null to keep the scene's setting. */
     @Option(names = "--samples", paramLabel = "N", description = "anti-aliasing rays per pixel (1 = off)")
     private Integer samples;
 
+    /** {@code --width}: the image width in pixels, or null to keep the scene's setting. */
     @Option(
             names = "--width",
             paramLabel = "W",
             description = "image width; alone, the height follows the scene's aspect ratio")
     private Integer width;
 
+    /** {@code --height}: the image height in pixels, or null to keep the scene's setting. */
     @Option(
             names = "--height",
             paramLabel = "H",
             description = "image height; alone, the width follows the scene's aspect ratio")
     private Integer height;
 
+    /** {@code --light-cutoff}: display steps of direct light that may be left out, or null to keep the scene's. */
     @Option(
             names = "--light-cutoff",
             paramLabel = "STEPS",
@@ -51,7 +58,15 @@ public final class RenderOverrides implements Serializable {
     /** No overrides: the scene file's settings (picocli fills the options of a mixin it creates this way). */
     public RenderOverrides() {}
 
-    /** These overrides; null leaves the scene's setting. */
+    /**
+     * These overrides; null leaves the scene's setting.
+     *
+     * @param width the image width in pixels, or null
+     * @param height the image height in pixels, or null
+     * @param samples anti-aliasing rays per pixel, or null
+     * @param bvh true for the BVH, false for brute force, or null
+     * @return new overrides with no light cutoff override
+     */
     public static RenderOverrides of(Integer width, Integer height, Integer samples, Boolean bvh) {
         RenderOverrides o = new RenderOverrides();
         o.width = width;
@@ -61,7 +76,12 @@ public final class RenderOverrides implements Serializable {
         return o;
     }
 
-    /** Rejects values no scene could take, naming the option. */
+    /**
+     * Rejects values no scene could take, naming the option.
+     *
+     * @throws BadInputException if a count or size is below 1, the samples exceed {@link Limits#MAX_SAMPLES} or the
+     *     light cutoff is outside [0, 255]
+     */
     public void check() throws BadInputException {
         checkPositive("--samples", samples);
         if (samples != null && samples > Limits.MAX_SAMPLES) {
@@ -83,6 +103,9 @@ public final class RenderOverrides implements Serializable {
     /**
      * The document with these overrides. One of width and height keeps the scene's aspect ratio; both with another
      * ratio keep the view plane width and square pixels.
+     *
+     * @param d the scene document as read
+     * @return a document with the overridden settings, or {@code d} itself when it has no render section
      */
     public SceneDocument apply(SceneDocument d) {
         RenderDocument r = d.render();

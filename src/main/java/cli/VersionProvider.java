@@ -12,7 +12,11 @@ public final class VersionProvider implements CommandLine.IVersionProvider {
         return new String[] {"raytracer " + version(), "Java " + System.getProperty("java.version")};
     }
 
-    /** The project version, or "unknown" when run from unfiltered sources. */
+    /**
+     * The project version, or "unknown" when run from unfiltered sources.
+     *
+     * @return the version, e.g. {@code 1.0.0}, or {@code unknown}
+     */
     public static String version() {
         Properties p = new Properties();
         try (InputStream in = VersionProvider.class.getResourceAsStream("/raytracer-version.properties")) {

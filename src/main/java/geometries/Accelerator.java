@@ -105,12 +105,27 @@ public final class Accelerator implements Intersectable {
         buildSeconds = (end - collectStart) * 1e-9;
     }
 
-    /** Compiles {@code geometry} with a BVH of default settings, or for brute-force search. */
+    /**
+     * Compiles {@code geometry} with a BVH of default settings, or for brute-force search.
+     *
+     * @param geometry the scene or geometry to compile; not null
+     * @param useBvh true to build a BVH, false to test every primitive (brute force)
+     * @return the compiled search structure
+     */
     public static Accelerator build(Intersectable geometry, boolean useBvh) {
         return build(geometry, useBvh, DEFAULT_BINS, DEFAULT_MAX_LEAF_SIZE);
     }
 
-    /** Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build. */
+    /**
+     * Compiles {@code geometry}; {@code bins} and {@code maxLeafSize} tune the BVH build.
+     *
+     * @param geometry the scene or geometry to compile; not null
+     * @param useBvh true to build a BVH, false to test every primitive (brute force)
+     * @param bins the number of SAH bins per node, 2..256 (checked even without a BVH)
+     * @param maxLeafSize the most primitives a leaf may hold, 1..64 (checked even without a BVH)
+     * @return the compiled search structure
+     * @throws IllegalArgumentException if {@code geometry} is null or a BVH setting is out of range
+     */
     public static Accelerator build(Intersectable geometry, boolean useBvh, int bins, int maxLeafSize) {
         primitives.Util.requireNonNull(geometry, "geometry");
         // Checked here, not only in BVH.build, so bad settings fail the same way for empty and brute-force scenes.
@@ -121,27 +136,47 @@ public final class Accelerator implements Intersectable {
         return new Accelerator(c, useBvh, bins, maxLeafSize, start);
     }
 
-    /** The BVH, or null in brute-force mode or for a scene without bounded geometry. */
+    /**
+     * The BVH, or null in brute-force mode or for a scene without bounded geometry.
+     *
+     * @return the BVH, or null
+     */
     public BVH getBvh() {
         return bvh;
     }
 
-    /** Bounded primitives (triangles and other bounded shapes) in the search structure. */
+    /**
+     * Bounded primitives (triangles and other bounded shapes) in the search structure.
+     *
+     * @return the number of bounded primitives
+     */
     public int boundedPrimitiveCount() {
         return boundedCount;
     }
 
-    /** Primitives tested beside the tree. */
+    /**
+     * Primitives tested beside the tree.
+     *
+     * @return the number of unbounded primitives (planes, tubes)
+     */
     public int unboundedPrimitiveCount() {
         return unbounded.length;
     }
 
-    /** Wall time of compilation including the BVH build, in seconds. */
+    /**
+     * Wall time of compilation including the BVH build, in seconds.
+     *
+     * @return the build time in seconds
+     */
     public double buildSeconds() {
         return buildSeconds;
     }
 
-    /** Where the build time went, phase by phase, for benchmark reports. */
+    /**
+     * Where the build time went, phase by phase, for benchmark reports.
+     *
+     * @return the seconds of collection, boxes, BVH build and layout, as one line
+     */
     public String buildBreakdown() {
         return String.format(
                 java.util.Locale.ROOT,
@@ -152,7 +187,11 @@ public final class Accelerator implements Intersectable {
                 layoutSeconds);
     }
 
-    /** Bytes of the flat primitive arrays plus the BVH. */
+    /**
+     * Bytes of the flat primitive arrays plus the BVH.
+     *
+     * @return the size in bytes of the search structure's arrays
+     */
     public long bytes() {
         long b = 8L * triangles.length
                 + 4L * (info.length + parts.length)
@@ -342,6 +381,12 @@ public final class Accelerator implements Intersectable {
      * nothing is in the way, {@link Double3#ZERO} when an opaque surface is, otherwise the product of the
      * transparency kT of every surface crossed. A convenience over {@link #passesLight}, which the renderer calls
      * without allocating.
+     *
+     * @param ray the shadow ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive (the distance to the light)
+     * @param scratch a record the search may overwrite
+     * @return the transmittance per channel, each in [0, 1]
      */
     public Double3 transmittance(Ray ray, double tMin, double tMax, HitRecord scratch) {
         if (!passesLight(ray, tMin, tMax, scratch)) return Double3.ZERO;
@@ -361,6 +406,12 @@ public final class Accelerator implements Intersectable {
      * {@link HitRecord#occluder} (-1 when none, or when the blocker was unbounded or may let light through). Callers
      * keep the last occluder per light: neighbouring shadow rays toward a light are usually blocked by the same
      * primitive. The answer is the same with any hint.
+     *
+     * @param ray the shadow ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive (the distance to the light)
+     * @param scratch the record receiving the transmittance and the occluder, holding the occluder hint
+     * @return true when no opaque surface blocks the light
      */
     public boolean passesLight(Ray ray, double tMin, double tMax, HitRecord scratch) {
         scratch.transparentCount = 0;

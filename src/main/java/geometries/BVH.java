@@ -193,6 +193,9 @@ public final class BVH {
      * @param primitiveBounds six doubles per primitive: min x, y, z then max x, y, z
      * @param bins number of SAH bins per node, 2..256
      * @param maxLeafSize most primitives a leaf may hold unless their centroids coincide, 1..64
+     * @return the new BVH
+     * @throws IllegalArgumentException if {@code bins} or {@code maxLeafSize} is out of range, or the bounds are empty or
+     *     not six values per primitive
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
         return build(primitiveBounds, bins, maxLeafSize, true);
@@ -244,35 +247,65 @@ public final class BVH {
         }
     }
 
-    /** Nodes of the traversal tree, leaves included: wide interior nodes plus leaves. */
+    /**
+     * Nodes of the traversal tree, leaves included: wide interior nodes plus leaves.
+     *
+     * @return the number of wide interior nodes plus leaves
+     */
     public int nodeCount() {
         return wideNodeCount + leafCount;
     }
 
-    /** Interior nodes of the binary SAH tree the traversal tree was collapsed from, plus its leaves. */
+    /**
+     * Interior nodes of the binary SAH tree the traversal tree was collapsed from, plus its leaves.
+     *
+     * @return the number of binary interior nodes plus leaves
+     */
     public int binaryNodeCount() {
         return binaryNodeCount;
     }
 
+    /**
+     * The number of leaves.
+     *
+     * @return the leaf count
+     */
     public int leafCount() {
         return leafCount;
     }
 
-    /** Depth of the deepest leaf of the binary SAH tree (the root is depth 0). */
+    /**
+     * Depth of the deepest leaf of the binary SAH tree (the root is depth 0).
+     *
+     * @return the depth, 0 for a single leaf
+     */
     public int depth() {
         return maxDepth;
     }
 
+    /**
+     * The number of primitives the BVH was built over.
+     *
+     * @return the primitive count
+     */
     public int primitiveCount() {
         return order.length;
     }
 
-    /** Bytes held by the node and order arrays. */
+    /**
+     * Bytes held by the node and order arrays.
+     *
+     * @return the size in bytes
+     */
     public long bytes() {
         return 4L * nodes.length + 4L * order.length + 4L * rootBounds.length;
     }
 
-    /** The box around everything in the tree. */
+    /**
+     * The box around everything in the tree.
+     *
+     * @return a new box around all primitives
+     */
     public BoundingBox bounds() {
         return new BoundingBox(
                 rootBounds[0], rootBounds[1], rootBounds[2], rootBounds[3], rootBounds[4], rootBounds[5]);
@@ -281,6 +314,10 @@ public final class BVH {
     /**
      * Node {@code i} of the traversal tree in depth-first order (0 is the root), for inspection and tests: it walks
      * the whole tree, so prefer {@link #nodes()} to look at many.
+     *
+     * @param i the node's depth-first index, from 0 to {@link #nodeCount()} - 1
+     * @return a new view of the node
+     * @throws IllegalArgumentException if {@code i} is out of range
      */
     public BVHNode node(int i) {
         if (i < 0 || i >= nodeCount()) {
@@ -289,7 +326,11 @@ public final class BVH {
         return nodes().get(i);
     }
 
-    /** All nodes of the traversal tree in depth-first order, leaves included (allocates; for inspection and tests). */
+    /**
+     * All nodes of the traversal tree in depth-first order, leaves included (allocates; for inspection and tests).
+     *
+     * @return a new list of node views, the root first
+     */
     public List<BVHNode> nodes() {
         List<BVHNode> list = new ArrayList<>(nodeCount());
         collect(bounds(), rootLink, rootCount, list);
@@ -324,7 +365,12 @@ public final class BVH {
         return Float.floatToRawIntBits(nodes[i]);
     }
 
-    /** Original index of the primitive at position {@code k} of the leaf order. */
+    /**
+     * Original index of the primitive at position {@code k} of the leaf order.
+     *
+     * @param k the 0-based position in the leaf order, below {@link #primitiveCount()}
+     * @return the primitive's index in the bounds array given to {@link #build}
+     */
     public int primitiveAt(int k) {
         return order[k];
     }

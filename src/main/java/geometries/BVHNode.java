@@ -14,6 +14,11 @@ import java.util.List;
  * @param children view indices of an interior node's children (empty for leaves)
  */
 public record BVHNode(BoundingBox bounds, int firstPrimitive, int primitiveCount, List<Integer> children) {
+    /**
+     * Whether this node is a leaf.
+     *
+     * @return true when the node holds primitives
+     */
     public boolean isLeaf() {
         return primitiveCount > 0;
     }

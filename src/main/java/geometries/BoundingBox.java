@@ -16,8 +16,20 @@ public final class BoundingBox {
     /** Enlargement of the far slab distance that makes the slab test conservative. */
     static final double FAR_SCALE = 1 + 2 * Util.gamma(3);
 
+    /** The box's corners: the minimum and maximum coordinates on each axis. */
     public final double minX, minY, minZ, maxX, maxY, maxZ;
 
+    /**
+     * A box of the given extents.
+     *
+     * @param minX the smallest x
+     * @param minY the smallest y
+     * @param minZ the smallest z
+     * @param maxX the largest x, at least {@code minX}
+     * @param maxY the largest y, at least {@code minY}
+     * @param maxZ the largest z, at least {@code minZ}
+     * @throws IllegalArgumentException if a minimum exceeds its maximum or a coordinate is NaN
+     */
     public BoundingBox(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
         if (!(minX <= maxX && minY <= maxY && minZ <= maxZ)) {
             throw new IllegalArgumentException("bounding box min must not exceed max (and no NaN), but was (" + minX
@@ -31,7 +43,13 @@ public final class BoundingBox {
         this.maxZ = maxZ;
     }
 
-    /** The smallest box holding both points. */
+    /**
+     * The smallest box holding both points.
+     *
+     * @param a one corner
+     * @param b the opposite corner
+     * @return a new box
+     */
     public static BoundingBox of(Point a, Point b) {
         return new BoundingBox(
                 Math.min(a.x, b.x),
@@ -42,7 +60,12 @@ public final class BoundingBox {
                 Math.max(a.z, b.z));
     }
 
-    /** The smallest box holding all points. */
+    /**
+     * The smallest box holding all points.
+     *
+     * @param points the points, at least one
+     * @return a new box
+     */
     public static BoundingBox of(Point... points) {
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
         double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
@@ -68,6 +91,12 @@ public final class BoundingBox {
                 Math.nextUp(cz + rz));
     }
 
+    /**
+     * The smallest box holding this box and another.
+     *
+     * @param other the other box
+     * @return a new box
+     */
     public BoundingBox union(BoundingBox other) {
         return new BoundingBox(
                 Math.min(minX, other.minX),
@@ -78,28 +107,61 @@ public final class BoundingBox {
                 Math.max(maxZ, other.maxZ));
     }
 
+    /**
+     * The surface area, the cost measure of the SAH.
+     *
+     * @return the total area of the six faces
+     */
     public double surfaceArea() {
         double ex = maxX - minX, ey = maxY - minY, ez = maxZ - minZ;
         return 2 * (ex * ey + ey * ez + ez * ex);
     }
 
+    /**
+     * The centre point.
+     *
+     * @return the midpoint of the two corners
+     */
     public Point center() {
         return new Point((minX + maxX) * 0.5, (minY + maxY) * 0.5, (minZ + maxZ) * 0.5);
     }
 
+    /**
+     * The minimum corner.
+     *
+     * @return the point (minX, minY, minZ)
+     */
     public Point getMin() {
         return new Point(minX, minY, minZ);
     }
 
+    /**
+     * The maximum corner.
+     *
+     * @return the point (maxX, maxY, maxZ)
+     */
     public Point getMax() {
         return new Point(maxX, maxY, maxZ);
     }
 
+    /**
+     * Whether a point lies in the box, faces included.
+     *
+     * @param p the point tested
+     * @return true when every coordinate lies within the box's extent
+     */
     public boolean contains(Point p) {
         return p.x >= minX && p.x <= maxX && p.y >= minY && p.y <= maxY && p.z >= minZ && p.z <= maxZ;
     }
 
-    /** Whether the ray crosses the box somewhere in {@code (tMin, tMax)}. */
+    /**
+     * Whether the ray crosses the box somewhere in {@code (tMin, tMax)}.
+     *
+     * @param ray the ray
+     * @param tMin the start of the interval along the ray
+     * @param tMax the end of the interval along the ray
+     * @return true when the ray may cross the box in the interval (the test is conservative)
+     */
     public boolean intersects(Ray ray, double tMin, double tMax) {
         return slabTest(minX, minY, minZ, maxX, maxY, maxZ, ray, tMin, tMax);
     }

@@ -18,12 +18,25 @@ public class Cylinder extends Tube {
     private final double height;
     private final Point top;
 
+    /**
+     * A capped cylinder from the axis head to {@code height} along the axis.
+     *
+     * @param radius the radius, positive and finite
+     * @param axis the axis ray: the base centre and the direction toward the top; not null
+     * @param height the distance from the base to the top cap, positive and finite
+     * @throws IllegalArgumentException if a value is null, not positive or not finite
+     */
     public Cylinder(double radius, Ray axis, double height) {
         super(radius, axis);
         this.height = Util.requirePositive(height, "cylinder height");
         this.top = axis.getPoint(height);
     }
 
+    /**
+     * The distance between the two caps.
+     *
+     * @return the height, positive
+     */
     public double getHeight() {
         return height;
     }

@@ -13,13 +13,26 @@ import primitives.Util;
 public class Geometries implements Intersectable {
     private final List<Intersectable> members = new ArrayList<>();
 
+    /** An empty composite. */
     public Geometries() {}
 
+    /**
+     * A composite of the given geometries.
+     *
+     * @param geometries the members, in order; none null, and not the composite itself
+     * @throws IllegalArgumentException if the array or a member is null
+     */
     public Geometries(Intersectable... geometries) {
         add(geometries);
     }
 
-    /** Adds geometries and returns this composite. */
+    /**
+     * Adds geometries and returns this composite.
+     *
+     * @param geometries the members to add, in order; none null, and not this composite
+     * @return this composite
+     * @throws IllegalArgumentException if the array or a member is null, or a member is this composite
+     */
     public Geometries add(Intersectable... geometries) {
         Util.requireNonNull(geometries, "geometries");
         for (int i = 0; i < geometries.length; i++) {
@@ -34,11 +47,20 @@ public class Geometries implements Intersectable {
         return this;
     }
 
-    /** The members, in the order they were added (read-only). */
+    /**
+     * The members, in the order they were added (read-only).
+     *
+     * @return an unmodifiable view of the members
+     */
     public List<Intersectable> getMembers() {
         return Collections.unmodifiableList(members);
     }
 
+    /**
+     * Whether the composite has no members.
+     *
+     * @return true when nothing was added
+     */
     public boolean isEmpty() {
         return members.isEmpty();
     }

@@ -88,7 +88,11 @@ public final class HitRecord {
         }
     }
 
-    /** Forgets the previous hit so the record can take a new query. */
+    /**
+     * Forgets the previous hit so the record can take a new query.
+     *
+     * @return this record
+     */
     public HitRecord reset() {
         t = Double.POSITIVE_INFINITY;
         geometry = null;
@@ -99,41 +103,75 @@ public final class HitRecord {
         return this;
     }
 
-    /** The hit point as a {@link Point} (allocates: for tests and users; the renderer reads the fields). */
+    /**
+     * The hit point as a {@link Point} (allocates: for tests and users; the renderer reads the fields).
+     *
+     * @return a new point of the hit's coordinates
+     */
     public Point point() {
         return new Point(px, py, pz);
     }
 
-    /** The geometric normal as a {@link Vector} (allocates). */
+    /**
+     * The geometric normal as a {@link Vector} (allocates).
+     *
+     * @return a new unit vector of the geometric normal
+     */
     public Vector normal() {
         return new Vector(nx, ny, nz);
     }
 
-    /** The shading normal as a {@link Vector} (allocates). */
+    /**
+     * The shading normal as a {@link Vector} (allocates).
+     *
+     * @return a new unit vector of the shading normal
+     */
     public Vector shadingNormal() {
         return new Vector(snx, sny, snz);
     }
 
-    /** Sets the refined hit point. */
+    /**
+     * Sets the refined hit point.
+     *
+     * @param x the hit point's x coordinate
+     * @param y the hit point's y coordinate
+     * @param z the hit point's z coordinate
+     */
     public void setPoint(double x, double y, double z) {
         px = x;
         py = y;
         pz = z;
     }
 
-    /** Sets the geometric normal and, to the same unit vector, the shading normal. */
+    /**
+     * Sets the geometric normal and, to the same unit vector, the shading normal.
+     *
+     * @param x the unit normal's x component
+     * @param y the unit normal's y component
+     * @param z the unit normal's z component
+     */
     public void setNormal(double x, double y, double z) {
         nx = snx = x;
         ny = sny = y;
         nz = snz = z;
     }
 
-    /** Sets the geometric normal and the shading normal to {@code n}. */
+    /**
+     * Sets the geometric normal and the shading normal to {@code n}.
+     *
+     * @param n the unit normal
+     */
     public void setNormal(Vector n) {
         setNormal(n.x, n.y, n.z);
     }
 
-    /** Sets the surface error bound of the hit point. */
+    /**
+     * Sets the surface error bound of the hit point.
+     *
+     * @param ex the error bound along x, at least 0
+     * @param ey the error bound along y, at least 0
+     * @param ez the error bound along z, at least 0
+     */
     public void setError(double ex, double ey, double ez) {
         errorX = ex;
         errorY = ey;

@@ -19,23 +19,42 @@ public interface Intersectable {
      * Finds the closest intersection with {@code tMin < t < tMax}. On success fills {@code hit.t},
      * {@code hit.geometry}, {@code hit.part}, {@code hit.u}, {@code hit.v} and returns true; on failure leaves
      * the record untouched.
+     *
+     * @param ray the ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive; may be infinite
+     * @param hit the record receiving the closest hit
+     * @return true when a hit was found in the interval
      */
     boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit);
 
     /**
      * Whether anything lies on the ray with {@code tMin < t < tMax} (an any-hit query: it may stop at the first
      * occluder found). {@code scratch} may be overwritten.
+     *
+     * @param ray the ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive; may be infinite
+     * @param scratch a record the query may overwrite
+     * @return true when something lies on the ray in the interval
      */
     default boolean occludes(Ray ray, double tMin, double tMax, HitRecord scratch) {
         return intersect(ray, tMin, tMax, scratch);
     }
 
-    /** The axis-aligned bounds, or {@code null} for unbounded geometry (planes, infinite tubes). */
+    /**
+     * The axis-aligned bounds, or {@code null} for unbounded geometry (planes, infinite tubes).
+     *
+     * @return the bounding box, or null when unbounded
+     */
     BoundingBox getBoundingBox();
 
     /**
      * All intersection points with {@code t > 0}, nearest first; empty when the ray misses. A convenience for
      * tests and users: it allocates, and the renderer does not use it.
+     *
+     * @param ray the ray
+     * @return a new list of the intersection points, nearest first
      */
     default List<Point> findIntersections(Ray ray) {
         List<Point> points = new ArrayList<>();

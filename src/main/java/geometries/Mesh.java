@@ -29,6 +29,8 @@ public class Mesh extends Geometry {
 
     /**
      * @param normals x, y, z of a normal per vertex (need not be unit), or null for flat shading
+     * @param vertices x, y, z of each vertex
+     * @param indices three 0-based vertex indices per triangle, at least one triangle
      */
     public Mesh(double[] vertices, int[] indices, double[] normals) {
         Util.requireNonNull(vertices, "mesh vertices");
@@ -71,31 +73,61 @@ public class Mesh extends Geometry {
         this.normals = normals == null ? null : normals.clone();
     }
 
-    /** Number of triangles, including any of zero area. */
+    /**
+     * Number of triangles, including any of zero area.
+     *
+     * @return the triangle count
+     */
     public int triangleCount() {
         return indices.length / 3;
     }
 
+    /**
+     * The number of vertices.
+     *
+     * @return the vertex count
+     */
     public int vertexCount() {
         return vertices.length / 3;
     }
 
-    /** A copy of the vertex coordinates: x, y, z per vertex. */
+    /**
+     * A copy of the vertex coordinates: x, y, z per vertex.
+     *
+     * @return a new array of x, y, z per vertex
+     */
     public double[] getVertices() {
         return vertices.clone();
     }
 
-    /** A copy of the vertex indices: three per triangle. */
+    /**
+     * A copy of the vertex indices: three per triangle.
+     *
+     * @return a new array of three 0-based vertex indices per triangle
+     */
     public int[] getIndices() {
         return indices.clone();
     }
 
-    /** A copy of the per-vertex normals, or null for a flat-shaded mesh. */
+    /**
+     * A copy of the per-vertex normals, or null for a flat-shaded mesh.
+     *
+     * @return a new array of x, y, z per vertex, or null
+     */
     public double[] getNormals() {
         return normals == null ? null : normals.clone();
     }
 
-    /** This mesh scaled by {@code scale} about the origin, then moved by (dx, dy, dz), with the same material. */
+    /**
+     * This mesh scaled by {@code scale} about the origin, then moved by (dx, dy, dz), with the same material.
+     *
+     * @param scale the scale factor, positive and finite
+     * @param dx the translation along x
+     * @param dy the translation along y
+     * @param dz the translation along z
+     * @return a new mesh
+     * @throws IllegalArgumentException if {@code scale} is not positive and finite
+     */
     public Mesh transformed(double scale, double dx, double dy, double dz) {
         Util.requirePositive(scale, "mesh scale");
         double[] moved = new double[vertices.length];
@@ -109,12 +141,22 @@ public class Mesh extends Geometry {
         return mesh;
     }
 
-    /** Vertex {@code i} of the shared array. */
+    /**
+     * Vertex {@code i} of the shared array.
+     *
+     * @param i the 0-based vertex index
+     * @return a new point at the vertex
+     */
     public Point vertex(int i) {
         return new Point(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);
     }
 
-    /** Whether triangle {@code i} has no area (it can never be hit). */
+    /**
+     * Whether triangle {@code i} has no area (it can never be hit).
+     *
+     * @param i the 0-based triangle index
+     * @return true when the triangle's vertices are collinear or coincide
+     */
     public boolean isDegenerate(int i) {
         return !WatertightTriangle.hasArea(
                 vertices, 3 * indices[3 * i], 3 * indices[3 * i + 1], 3 * indices[3 * i + 2]);

@@ -14,6 +14,10 @@ public final class Meshes {
      * An {@code n x n} grid of quads over {@code [-1, 1]^2}, two triangles per quad, lifted to the height
      * {@code z = 0.15 sin(3x) cos(2y) + 0.05 sin(11x + 1) sin(13y + 2) + 0.02 sin(37x) cos(41y)}. Triangles wind
      * counter-clockwise seen from +z. {@code n = 224} gives 100,352 triangles, {@code n = 708} gives 1,002,528.
+     *
+     * @param n the number of quads per side, 1 to 16,384
+     * @return a new mesh of {@code 2 n^2} triangles
+     * @throws IllegalArgumentException if {@code n} is out of range
      */
     public static Mesh heightfield(int n) {
         if (n < 1 || n > 16_384) {
@@ -47,7 +51,13 @@ public final class Meshes {
         return new Mesh(vertices, indices);
     }
 
-    /** The heightfield's surface height above {@code (x, y)}. */
+    /**
+     * The heightfield's surface height above {@code (x, y)}.
+     *
+     * @param x the x coordinate, in [-1, 1] on the mesh
+     * @param y the y coordinate, in [-1, 1] on the mesh
+     * @return the height z
+     */
     public static double height(double x, double y) {
         return 0.15 * Math.sin(3 * x) * Math.cos(2 * y)
                 + 0.05 * Math.sin(11 * x + 1) * Math.sin(13 * y + 2)
@@ -58,6 +68,10 @@ public final class Meshes {
      * A unit icosahedron subdivided {@code level} times, each triangle split into four at its edge midpoints and
      * the new vertices projected onto the unit sphere. Vertices are shared, so the mesh is closed; triangles wind
      * counter-clockwise seen from outside. Level 6 gives 81,920 triangles, level 8 gives 1,310,720.
+     *
+     * @param level the subdivision level, 0 to 10
+     * @return a new mesh of {@code 20 * 4^level} triangles
+     * @throws IllegalArgumentException if {@code level} is out of range
      */
     public static Mesh icosphere(int level) {
         if (level < 0 || level > 10) {

@@ -15,13 +15,25 @@ public class Plane extends Geometry {
     private final Point point;
     private final Vector normal;
 
-    /** The plane through {@code point} perpendicular to {@code normal} (normalized here). */
+    /**
+     * The plane through {@code point} perpendicular to {@code normal} (normalized here).
+     *
+     * @param point a point of the plane; not null
+     * @param normal the plane's normal, any length; not null
+     */
     public Plane(Point point, Vector normal) {
         this.point = Util.requireNonNull(point, "plane point");
         this.normal = Util.requireNonNull(normal, "plane normal").normalize();
     }
 
-    /** The plane through three points; collinear or coincident points are an error. */
+    /**
+     * The plane through three points; collinear or coincident points are an error.
+     *
+     * @param p1 the first point; not null
+     * @param p2 the second point; not null
+     * @param p3 the third point; not null
+     * @throws IllegalArgumentException if a point is null, or the points coincide or are collinear
+     */
     public Plane(Point p1, Point p2, Point p3) {
         Util.requireNonNull(p1, "plane point p1");
         Util.requireNonNull(p2, "plane point p2");
@@ -41,10 +53,20 @@ public class Plane extends Geometry {
         this.normal = n.normalize();
     }
 
+    /**
+     * The point the plane was defined by.
+     *
+     * @return a point of the plane
+     */
     public Point getPoint() {
         return point;
     }
 
+    /**
+     * The plane's normal.
+     *
+     * @return the unit normal
+     */
     public Vector getNormal() {
         return normal;
     }

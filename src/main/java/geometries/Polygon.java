@@ -27,6 +27,12 @@ public class Polygon extends Geometry {
     /** Shared-edge flags of each fan triangle: its inner diagonals. */
     final int[] fanSharedEdges;
 
+    /**
+     * A polygon of the given vertices, in order around the outline.
+     *
+     * @param vertices the vertices, at least three
+     * @throws IllegalArgumentException if the vertices do not form a convex, planar polygon
+     */
     public Polygon(Point... vertices) {
         this(validateVertices(vertices), vertices.length == 3 ? "triangle" : "polygon");
     }
@@ -148,6 +154,11 @@ public class Polygon extends Geometry {
         return cx * n.x + cy * n.y + cz * n.z;
     }
 
+    /**
+     * The vertices, in order.
+     *
+     * @return the vertex list as given to the constructor
+     */
     public List<Point> getVertices() {
         return vertices;
     }

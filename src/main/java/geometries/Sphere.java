@@ -21,6 +21,13 @@ public class Sphere extends Geometry {
     private final double radius;
     private final double radiusSquared;
 
+    /**
+     * A sphere of the given centre and radius.
+     *
+     * @param center the centre; not null
+     * @param radius the radius, positive, with a positive finite square
+     * @throws IllegalArgumentException if {@code center} is null or the radius is not positive or its square not finite
+     */
     public Sphere(Point center, double radius) {
         this.center = Util.requireNonNull(center, "sphere center");
         this.radius = Util.requirePositive(radius, "sphere radius");
@@ -31,15 +38,30 @@ public class Sphere extends Geometry {
         }
     }
 
-    /** The course order of arguments: radius first. */
+    /**
+     * The course order of arguments: radius first.
+     *
+     * @param radius the radius, positive, with a positive finite square
+     * @param center the centre; not null
+     */
     public Sphere(double radius, Point center) {
         this(center, radius);
     }
 
+    /**
+     * The centre.
+     *
+     * @return the centre point
+     */
     public Point getCenter() {
         return center;
     }
 
+    /**
+     * The radius.
+     *
+     * @return the radius, positive
+     */
     public double getRadius() {
         return radius;
     }

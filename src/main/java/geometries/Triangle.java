@@ -10,6 +10,14 @@ import primitives.Point;
  * becomes watertight (see {@link WatertightTriangle}).
  */
 public class Triangle extends Polygon {
+    /**
+     * A triangle of the given vertices.
+     *
+     * @param p0 the first vertex; not null
+     * @param p1 the second vertex; not null
+     * @param p2 the third vertex; not null
+     * @throws IllegalArgumentException if a vertex is null, or the vertices coincide or are collinear
+     */
     public Triangle(Point p0, Point p1, Point p2) {
         super(
                 new Point[] {

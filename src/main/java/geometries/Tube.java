@@ -17,20 +17,40 @@ import primitives.Vector;
  * use the same cancellation-free discriminant and stable pair as {@link Sphere}.
  */
 public class Tube extends Geometry {
+    /** The axis: a point on it and the unit direction. */
     protected final Ray axis;
+    /** The radius. */
     protected final double radius;
+    /** The radius squared. */
     protected final double radiusSquared;
 
+    /**
+     * An infinite tube of the given radius around an axis.
+     *
+     * @param radius the radius, positive and finite
+     * @param axis the axis; not null
+     * @throws IllegalArgumentException if the axis is null or the radius is not positive and finite
+     */
     public Tube(double radius, Ray axis) {
         this.axis = Util.requireNonNull(axis, "tube axis");
         this.radius = Util.requirePositive(radius, "tube radius");
         this.radiusSquared = radius * radius;
     }
 
+    /**
+     * The axis.
+     *
+     * @return the axis ray
+     */
     public Ray getAxis() {
         return axis;
     }
 
+    /**
+     * The radius.
+     *
+     * @return the radius, positive
+     */
     public double getRadius() {
         return radius;
     }
@@ -51,6 +71,14 @@ public class Tube extends Geometry {
     /**
      * The closest hit of the lateral surface whose axial coordinate lies strictly in {@code (hMin, hMax)}; the
      * roots are tried nearest first.
+     *
+     * @param ray the ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive
+     * @param hit the record receiving the hit
+     * @param hMin the lower bound of the axial coordinate, exclusive
+     * @param hMax the upper bound of the axial coordinate, exclusive
+     * @return true when a hit was found
      */
     protected final boolean intersectSide(Ray ray, double tMin, double tMax, HitRecord hit, double hMin, double hMax) {
         double vx = axis.dx(), vy = axis.dy(), vz = axis.dz();
@@ -110,7 +138,12 @@ public class Tube extends Geometry {
         completeSideHit(ray, hit);
     }
 
-    /** Hit point re-projected radially onto the lateral surface, with its error bound and outward normal. */
+    /**
+     * Hit point re-projected radially onto the lateral surface, with its error bound and outward normal.
+     *
+     * @param ray the ray that hit the side
+     * @param hit the record holding the distance; receives the point, error bound and normal
+     */
     protected final void completeSideHit(Ray ray, HitRecord hit) {
         double t = hit.t;
         double vx = axis.dx(), vy = axis.dy(), vz = axis.dz();

@@ -45,6 +45,15 @@ public final class WatertightTriangle {
      * returns true; otherwise leaves {@code hit} untouched.
      *
      * @param sharedEdges which edges are shared with another triangle ({@link #EDGE_12} etc.)
+     * @param v the flat array of vertex coordinates
+     * @param a the offset in {@code v} of the first vertex's x
+     * @param b the offset in {@code v} of the second vertex's x
+     * @param c the offset in {@code v} of the third vertex's x
+     * @param ray the ray
+     * @param tMin the start of the searched interval, exclusive
+     * @param tMax the end of the searched interval, exclusive
+     * @param hit the record receiving the hit
+     * @return true when the ray hits the triangle in the interval
      */
     public static boolean intersect(
             double[] v, int a, int b, int c, int sharedEdges, Ray ray, double tMin, double tMax, HitRecord hit) {

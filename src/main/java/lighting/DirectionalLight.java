@@ -10,6 +10,12 @@ public final class DirectionalLight implements LightSource {
     private final Color intensity;
     private final Vector direction;
 
+    /**
+     * A light of constant {@code intensity} shining along {@code direction}.
+     *
+     * @param intensity the light's colour and strength, the same at every point; not null
+     * @param direction the direction the light travels, from the light toward the scene; any length, normalized here
+     */
     public DirectionalLight(Color intensity, Vector direction) {
         this.intensity = Util.requireNonNull(intensity, "light intensity");
         this.direction = Util.requireNonNull(direction, "light direction").normalize();
@@ -41,6 +47,11 @@ public final class DirectionalLight implements LightSource {
         out.b = intensity.getB();
     }
 
+    /**
+     * The direction the light travels.
+     *
+     * @return the unit direction from the light toward the scene
+     */
     public Vector getDirection() {
         return direction;
     }

@@ -17,7 +17,11 @@ public final class LightSample {
     /** The intensity arriving at the point, attenuation and beam shape included (0 where the light cannot reach). */
     public double r, g, b;
 
-    /** Whether no light arrives (every channel exactly 0). */
+    /**
+     * Whether no light arrives (every channel exactly 0).
+     *
+     * @return true when the red, green and blue intensities are all 0
+     */
     public boolean isBlack() {
         return r == 0 && g == 0 && b == 0;
     }

@@ -18,27 +18,56 @@ public class PointLight implements LightSource {
     private int numSamples = 1;
     private double range = Double.POSITIVE_INFINITY;
 
+    /**
+     * A point light at {@code position} with no attenuation (kC = 1, kL = kQ = 0), radius 0 and infinite range.
+     *
+     * @param intensity the light's colour and strength at the position; not null
+     * @param position where the light is; not null
+     */
     public PointLight(Color intensity, Point position) {
         this.intensity = Util.requireNonNull(intensity, "light intensity");
         this.position = Util.requireNonNull(position, "light position");
     }
 
+    /**
+     * Sets the constant attenuation factor and returns this light.
+     *
+     * @param kC the constant term of {@code kC + kL d + kQ d^2}, at least 0
+     * @return this light
+     */
     public PointLight setKc(double kC) {
         this.kC = Util.requireNonNegative(kC, "kC");
         return this;
     }
 
+    /**
+     * Sets the linear attenuation factor and returns this light.
+     *
+     * @param kL the linear term of {@code kC + kL d + kQ d^2}, at least 0
+     * @return this light
+     */
     public PointLight setKl(double kL) {
         this.kL = Util.requireNonNegative(kL, "kL");
         return this;
     }
 
+    /**
+     * Sets the quadratic attenuation factor and returns this light.
+     *
+     * @param kQ the quadratic term of {@code kC + kL d + kQ d^2}, at least 0
+     * @return this light
+     */
     public PointLight setKq(double kQ) {
         this.kQ = Util.requireNonNegative(kQ, "kQ");
         return this;
     }
 
-    /** Radius of the emitting disk (0 = a point: hard shadows). */
+    /**
+     * Radius of the emitting disk (0 = a point: hard shadows).
+     *
+     * @param radius the disk radius in scene units, at least 0
+     * @return this light
+     */
     public PointLight setRadius(double radius) {
         this.radius = Util.requireNonNegative(radius, "light radius");
         return this;
@@ -47,6 +76,10 @@ public class PointLight implements LightSource {
     /**
      * Shadow rays per shading point when the radius is positive, 1 to {@link Limits#MAX_SAMPLES} (the
      * limit of anti-aliasing too).
+     *
+     * @param numSamples the number of shadow rays, 1 to {@link Limits#MAX_SAMPLES}
+     * @return this light
+     * @throws IllegalArgumentException if {@code numSamples} is out of range
      */
     public PointLight setNumSamples(int numSamples) {
         if (numSamples < 1 || numSamples > Limits.MAX_SAMPLES) {
@@ -60,6 +93,10 @@ public class PointLight implements LightSource {
     /**
      * Distance beyond which the light contributes nothing (a hard cut-off, as lights in games and modelling tools
      * have); infinite by default. Points beyond it cost no shadow rays.
+     *
+     * @param range the distance in scene units, positive (may be infinite)
+     * @return this light
+     * @throws IllegalArgumentException if {@code range} is not positive
      */
     public PointLight setRange(double range) {
         if (!(range > 0)) throw new IllegalArgumentException("light range must be positive, but was " + range);
@@ -67,6 +104,11 @@ public class PointLight implements LightSource {
         return this;
     }
 
+    /**
+     * The distance beyond which the light contributes nothing.
+     *
+     * @return the range in scene units, {@link Double#POSITIVE_INFINITY} unless set
+     */
     public double getRange() {
         return range;
     }
@@ -140,19 +182,38 @@ public class PointLight implements LightSource {
         return numSamples;
     }
 
-    /** The unattenuated intensity. */
+    /**
+     * The unattenuated intensity.
+     *
+     * @return the intensity at the light's position, before attenuation
+     */
     public Color getBaseIntensity() {
         return intensity;
     }
 
+    /**
+     * The constant attenuation factor.
+     *
+     * @return kC, at least 0
+     */
     public double getKc() {
         return kC;
     }
 
+    /**
+     * The linear attenuation factor.
+     *
+     * @return kL, at least 0
+     */
     public double getKl() {
         return kL;
     }
 
+    /**
+     * The quadratic attenuation factor.
+     *
+     * @return kQ, at least 0
+     */
     public double getKq() {
         return kQ;
     }

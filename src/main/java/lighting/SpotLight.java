@@ -13,12 +13,25 @@ public class SpotLight extends PointLight {
     private final Vector direction;
     private double narrowBeam = 1;
 
+    /**
+     * A spot light at {@code position} shining along {@code direction}, with beam exponent 1 and no attenuation.
+     *
+     * @param intensity the light's colour and strength on the beam's axis; not null
+     * @param position where the light is; not null
+     * @param direction the beam's axis; any length, normalized here; not null
+     */
     public SpotLight(Color intensity, Point position, Vector direction) {
         super(intensity, position);
         this.direction = Util.requireNonNull(direction, "spot direction").normalize();
     }
 
-    /** The beam exponent: 1 is the plain cosine falloff, larger values narrow the beam. */
+    /**
+     * The beam exponent: 1 is the plain cosine falloff, larger values narrow the beam.
+     *
+     * @param narrowBeam the exponent of the cosine falloff, at least 1 and finite
+     * @return this light
+     * @throws IllegalArgumentException if {@code narrowBeam} is below 1 or not finite
+     */
     public SpotLight setNarrowBeam(double narrowBeam) {
         if (!(narrowBeam >= 1) || !Double.isFinite(narrowBeam)) {
             throw new IllegalArgumentException("narrowBeam must be >= 1 and finite, but was " + narrowBeam);
@@ -87,10 +100,20 @@ public class SpotLight extends PointLight {
         out.b *= factor;
     }
 
+    /**
+     * The beam's axis.
+     *
+     * @return the unit direction the light shines along
+     */
     public Vector getDirection() {
         return direction;
     }
 
+    /**
+     * The beam exponent.
+     *
+     * @return the exponent of the cosine falloff, at least 1
+     */
     public double getNarrowBeam() {
         return narrowBeam;
     }

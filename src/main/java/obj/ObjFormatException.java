@@ -6,14 +6,32 @@ package obj;
  * throws.
  */
 public final class ObjFormatException extends Exception {
+    /** The file as the caller named it. */
     private final String file;
+    /** The 1-based line, or 0 when the problem concerns the whole file. */
     private final int line;
+    /** What is wrong and what is allowed. */
     private final String reason;
 
+    /**
+     * A problem with no underlying exception.
+     *
+     * @param file the file as the caller named it
+     * @param line the 1-based line, or 0 when the problem concerns the whole file
+     * @param reason what is wrong and what is allowed
+     */
     public ObjFormatException(String file, int line, String reason) {
         this(file, line, reason, null);
     }
 
+    /**
+     * A problem caused by another exception, such as an I/O error.
+     *
+     * @param file the file as the caller named it
+     * @param line the 1-based line, or 0 when the problem concerns the whole file
+     * @param reason what is wrong and what is allowed
+     * @param cause the underlying exception, or null
+     */
     public ObjFormatException(String file, int line, String reason, Throwable cause) {
         super(file + (line > 0 ? ":" + line : "") + ": " + reason, cause);
         this.file = file;
@@ -21,17 +39,29 @@ public final class ObjFormatException extends Exception {
         this.reason = reason;
     }
 
-    /** The file as the caller named it. */
+    /**
+     * The file as the caller named it.
+     *
+     * @return the file name as given, for messages
+     */
     public String getFile() {
         return file;
     }
 
-    /** The 1-based line, or 0 when the problem concerns the whole file. */
+    /**
+     * The 1-based line, or 0 when the problem concerns the whole file.
+     *
+     * @return the 1-based line number, or 0
+     */
     public int getLine() {
         return line;
     }
 
-    /** What is wrong and what is allowed, without the file and line. */
+    /**
+     * What is wrong and what is allowed, without the file and line.
+     *
+     * @return the reason alone
+     */
     public String getReason() {
         return reason;
     }

@@ -57,12 +57,25 @@ public final class ObjReader {
         this.file = file;
     }
 
-    /** Reads an OBJ file; the path as given names it in messages. */
+    /**
+     * Reads an OBJ file; the path as given names it in messages.
+     *
+     * @param path the OBJ file
+     * @return the triangles, normals and warnings read
+     * @throws ObjFormatException if the file cannot be read, is malformed or has no faces
+     */
     public static ObjMesh read(Path path) throws ObjFormatException {
         return read(path, path.toString());
     }
 
-    /** Reads an OBJ file that messages call {@code name}. */
+    /**
+     * Reads an OBJ file that messages call {@code name}.
+     *
+     * @param path the OBJ file
+     * @param name the file's name in messages and warnings
+     * @return the triangles, normals and warnings read
+     * @throws ObjFormatException if the file cannot be read, is malformed or has no faces
+     */
     public static ObjMesh read(Path path, String name) throws ObjFormatException {
         if (Files.isDirectory(path)) throw new ObjFormatException(name, 0, "is a folder, not an OBJ file");
         if (Files.exists(path) && !Files.isRegularFile(path)) {
@@ -80,6 +93,11 @@ public final class ObjReader {
     /**
      * Reads OBJ text; {@code name} names it in messages. The reader is not closed. Bytes are best read as
      * ISO-8859-1 (every byte is a character, so no decoding error can occur; OBJ is ASCII).
+     *
+     * @param name the text's name in messages and warnings
+     * @param text the OBJ text
+     * @return the triangles, normals and warnings read
+     * @throws ObjFormatException if the text cannot be read, is malformed, too long or has no faces
      */
     public static ObjMesh read(String name, Reader text) throws ObjFormatException {
         ObjReader reader = new ObjReader(name);
@@ -122,7 +140,14 @@ public final class ObjReader {
         return true;
     }
 
-    /** Reads OBJ text held in a string. */
+    /**
+     * Reads OBJ text held in a string.
+     *
+     * @param name the text's name in messages and warnings
+     * @param text the whole OBJ text
+     * @return the triangles, normals and warnings read
+     * @throws ObjFormatException if the text is malformed, too long or has no faces
+     */
     public static ObjMesh parse(String name, String text) throws ObjFormatException {
         return read(name, new StringReader(text));
     }

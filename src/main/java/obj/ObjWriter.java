@@ -12,7 +12,14 @@ import java.nio.file.Path;
 public final class ObjWriter {
     private ObjWriter() {}
 
-    /** The OBJ text of {@code mesh}. */
+    /**
+     * The OBJ text of {@code mesh}.
+     *
+     * @param mesh the mesh to write
+     * @param comment a one-line comment written first as {@code # comment} (line breaks become spaces), or null for
+     *     none
+     * @return the OBJ text, one statement per line
+     */
     public static String toObj(Mesh mesh, String comment) {
         double[] v = mesh.getVertices();
         int[] f = mesh.getIndices();
@@ -51,7 +58,13 @@ public final class ObjWriter {
         return s.toString();
     }
 
-    /** Writes {@code mesh} to {@code file} through a temporary file moved into place. */
+    /**
+     * Writes {@code mesh} to {@code file} through a temporary file moved into place.
+     *
+     * @param mesh the mesh to write
+     * @param file the file to create or replace
+     * @param comment a one-line comment written first, or null for none
+     */
     public static void write(Mesh mesh, Path file, String comment) {
         String text = toObj(mesh, comment);
         renderer.AtomicFile.write(file, "OBJ file", temp -> Files.writeString(temp, text, StandardCharsets.UTF_8));

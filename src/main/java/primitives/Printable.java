@@ -11,7 +11,12 @@ public final class Printable {
 
     private Printable() {}
 
-    /** {@code text} with control characters escaped, cut to {@link #MAX_LENGTH} characters. */
+    /**
+     * {@code text} with control characters escaped, cut to {@link #MAX_LENGTH} characters.
+     *
+     * @param text the text to quote, possibly from an untrusted file; may be null
+     * @return the escaped text, cut with "..." beyond {@link #MAX_LENGTH} characters, or "null"
+     */
     public static String of(String text) {
         return escape(text, MAX_LENGTH);
     }
@@ -19,6 +24,9 @@ public final class Printable {
     /**
      * A whole message with control characters escaped but line breaks kept, uncut: the last line of defence where
      * messages are printed.
+     *
+     * @param text the message; may be null
+     * @return the escaped message, or "null"
      */
     public static String message(String text) {
         if (text == null) return "null";

@@ -26,6 +26,9 @@ public class Ray {
     /**
      * A ray from {@code head} along {@code direction}, which is normalized here. A NaN or infinite origin or a
      * zero or NaN direction cannot be expressed by {@link Point} and {@link Vector}, so they are rejected there.
+     *
+     * @param head the ray's origin; not null
+     * @param direction the ray's direction, any length; not null
      */
     public Ray(Point head, Vector direction) {
         Util.requireNonNull(head, "ray origin");
@@ -77,83 +80,167 @@ public class Ray {
         return axis == 0 ? dx : axis == 1 ? dy : dz;
     }
 
+    /**
+     * The origin.
+     *
+     * @return the ray's head (created on first use for rays set from coordinates)
+     */
     public Point getHead() {
         if (head == null) head = new Point(ox, oy, oz);
         return head;
     }
 
-    /** The unit direction. */
+    /**
+     * The unit direction.
+     *
+     * @return the unit direction (created on first use for rays set from coordinates)
+     */
     public Vector getDirection() {
         if (direction == null) direction = new Vector(dx, dy, dz);
         return direction;
     }
 
-    /** The point at distance {@code t} along the ray; {@code t = 0} is the head itself. */
+    /**
+     * The point at distance {@code t} along the ray; {@code t = 0} is the head itself.
+     *
+     * @param t the distance along the ray from the head
+     * @return the point {@code head + t direction}
+     */
     public Point getPoint(double t) {
         return t == 0 ? getHead() : new Point(ox + t * dx, oy + t * dy, oz + t * dz);
     }
 
-    /** Origin x (the kernels read the coordinates one by one; {@link #getHead()} is the same point). */
+    /**
+     * Origin x (the kernels read the coordinates one by one; {@link #getHead()} is the same point).
+     *
+     * @return the origin's x coordinate
+     */
     public final double ox() {
         return ox;
     }
 
+    /**
+     * Origin y.
+     *
+     * @return the origin's y coordinate
+     */
     public final double oy() {
         return oy;
     }
 
+    /**
+     * Origin z.
+     *
+     * @return the origin's z coordinate
+     */
     public final double oz() {
         return oz;
     }
 
-    /** Unit direction x (the components of {@link #getDirection()}). */
+    /**
+     * Unit direction x (the components of {@link #getDirection()}).
+     *
+     * @return the unit direction's x component
+     */
     public final double dx() {
         return dx;
     }
 
+    /**
+     * Unit direction y.
+     *
+     * @return the unit direction's y component
+     */
     public final double dy() {
         return dy;
     }
 
+    /**
+     * Unit direction z.
+     *
+     * @return the unit direction's z component
+     */
     public final double dz() {
         return dz;
     }
 
-    /** {@code 1 / dx}: infinite for a zero component (the slab test handles it). */
+    /**
+     * {@code 1 / dx}: infinite for a zero component (the slab test handles it).
+     *
+     * @return the inverse of the direction's x component
+     */
     public final double invDx() {
         return invDx;
     }
 
+    /**
+     * {@code 1 / dy}: infinite for a zero component.
+     *
+     * @return the inverse of the direction's y component
+     */
     public final double invDy() {
         return invDy;
     }
 
+    /**
+     * {@code 1 / dz}: infinite for a zero component.
+     *
+     * @return the inverse of the direction's z component
+     */
     public final double invDz() {
         return invDz;
     }
 
-    /** The watertight triangle test's axis permutation: {@code kz} is the axis of the largest direction component. */
+    /**
+     * The watertight triangle test's axis permutation: {@code kz} is the axis of the largest direction component.
+     *
+     * @return the axis (0, 1 or 2) mapped to x
+     */
     public final int kx() {
         return kx;
     }
 
+    /**
+     * The watertight triangle test's axis mapped to y.
+     *
+     * @return the axis (0, 1 or 2) mapped to y
+     */
     public final int ky() {
         return ky;
     }
 
+    /**
+     * The watertight triangle test's axis mapped to z: the axis of the largest direction component.
+     *
+     * @return the axis (0, 1 or 2) mapped to z
+     */
     public final int kz() {
         return kz;
     }
 
-    /** The watertight triangle test's shear constants: {@code -d[kx]/d[kz]}, {@code -d[ky]/d[kz]}, {@code 1/d[kz]}. */
+    /**
+     * The watertight triangle test's shear constants: {@code -d[kx]/d[kz]}, {@code -d[ky]/d[kz]}, {@code 1/d[kz]}.
+     *
+     * @return {@code -d[kx]/d[kz]}
+     */
     public final double shearX() {
         return shearX;
     }
 
+    /**
+     * The watertight triangle test's shear constant {@code -d[ky]/d[kz]}.
+     *
+     * @return {@code -d[ky]/d[kz]}
+     */
     public final double shearY() {
         return shearY;
     }
 
+    /**
+     * The watertight triangle test's shear constant {@code 1/d[kz]}.
+     *
+     * @return {@code 1/d[kz]}
+     */
     public final double shearZ() {
         return shearZ;
     }

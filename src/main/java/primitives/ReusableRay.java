@@ -12,6 +12,13 @@ public final class ReusableRay extends Ray {
     /**
      * Points this ray from (ox, oy, oz) along (dx, dy, dz), which is normalized here.
      *
+     * @param ox the origin's x coordinate, finite
+     * @param oy the origin's y coordinate, finite
+     * @param oz the origin's z coordinate, finite
+     * @param dx the direction's x component, finite
+     * @param dy the direction's y component, finite
+     * @param dz the direction's z component, finite
+     * @return this ray
      * @throws IllegalArgumentException if a coordinate is not finite or the direction is zero
      */
     public ReusableRay set(double ox, double oy, double oz, double dx, double dy, double dz) {
@@ -27,7 +34,13 @@ public final class ReusableRay extends Ray {
         return this;
     }
 
-    /** Points this ray from {@code origin} along {@code direction}. */
+    /**
+     * Points this ray from {@code origin} along {@code direction}.
+     *
+     * @param origin the new origin; not null
+     * @param direction the new direction, any length; not null
+     * @return this ray
+     */
     public ReusableRay set(Point origin, Vector direction) {
         return set(origin.x, origin.y, origin.z, direction.x, direction.y, direction.z);
     }

@@ -8,10 +8,21 @@ package primitives;
  * underflows for tiny ones: (1e-200,1e-200,1e-200) and (1e200,1e200,1e200) both give 1/sqrt(3) per component.
  */
 public final class Vector extends Point {
+    /** The unit vector along x. */
     public static final Vector AXIS_X = new Vector(1, 0, 0);
+    /** The unit vector along y. */
     public static final Vector AXIS_Y = new Vector(0, 1, 0);
+    /** The unit vector along z. */
     public static final Vector AXIS_Z = new Vector(0, 0, 1);
 
+    /**
+     * A vector of the given components.
+     *
+     * @param x the x component, finite
+     * @param y the y component, finite
+     * @param z the z component, finite
+     * @throws IllegalArgumentException if a component is not finite or all three are zero
+     */
     public Vector(double x, double y, double z) {
         super(x, y, z);
         if (x == 0 && y == 0 && z == 0) {
@@ -19,7 +30,11 @@ public final class Vector extends Point {
         }
     }
 
-    /** A vector from a triple of components. */
+    /**
+     * A vector from a triple of components.
+     *
+     * @param xyz the components x, y, z as {@code d1}, {@code d2}, {@code d3}; finite, not all zero
+     */
     public Vector(Double3 xyz) {
         this(xyz.d1, xyz.d2, xyz.d3);
     }
@@ -29,16 +44,34 @@ public final class Vector extends Point {
         return new Vector(x + other.x, y + other.y, z + other.z);
     }
 
-    /** This vector minus {@code other}; an error if they are equal. */
+    /**
+     * This vector minus {@code other}; an error if they are equal.
+     *
+     * @param other the vector subtracted
+     * @return a new vector
+     * @throws IllegalArgumentException if the vectors are equal (a zero vector)
+     */
     public Vector subtract(Vector other) {
         return new Vector(x - other.x, y - other.y, z - other.z);
     }
 
-    /** This vector times {@code factor}; an error if the factor is zero. */
+    /**
+     * This vector times {@code factor}; an error if the factor is zero.
+     *
+     * @param factor the factor, non-zero
+     * @return a new vector
+     * @throws IllegalArgumentException if {@code factor} is zero
+     */
     public Vector scale(double factor) {
         return new Vector(x * factor, y * factor, z * factor);
     }
 
+    /**
+     * The dot product.
+     *
+     * @param other the other vector
+     * @return the sum of the products of the components
+     */
     public double dotProduct(Vector other) {
         return x * other.x + y * other.y + z * other.z;
     }
@@ -46,6 +79,10 @@ public final class Vector extends Point {
     /**
      * The cross product, computed with {@link Util#differenceOfProducts} so that nearly parallel vectors do not
      * lose their small result to cancellation. Parallel vectors are an error.
+     *
+     * @param other the other vector, not parallel to this one
+     * @return a new vector perpendicular to both
+     * @throws IllegalArgumentException if the vectors are parallel
      */
     public Vector crossProduct(Vector other) {
         double cx = Util.differenceOfProducts(y, other.z, z, other.y);
@@ -58,16 +95,32 @@ public final class Vector extends Point {
         return new Vector(cx, cy, cz);
     }
 
+    /**
+     * The squared length (cheaper than {@link #length()}, but it may overflow or underflow).
+     *
+     * @return {@code x*x + y*y + z*z}
+     */
     public double lengthSquared() {
         return x * x + y * y + z * z;
     }
 
-    /** The length, computed without overflow or underflow. */
+    /**
+     * The length, computed without overflow or underflow.
+     *
+     * @return the Euclidean length
+     */
     public double length() {
         return length(x, y, z);
     }
 
-    /** The length of (x, y, z), exactly as {@link #length()} computes it (scaled by the largest component first). */
+    /**
+     * The length of (x, y, z), exactly as {@link #length()} computes it (scaled by the largest component first).
+     *
+     * @param x the x component
+     * @param y the y component
+     * @param z the z component, not all three zero
+     * @return the Euclidean length
+     */
     public static double length(double x, double y, double z) {
         double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
         double sx = x / m;
@@ -76,7 +129,11 @@ public final class Vector extends Point {
         return m * Math.sqrt(sx * sx + sy * sy + sz * sz);
     }
 
-    /** The unit vector in this direction, computed without overflow or underflow. */
+    /**
+     * The unit vector in this direction, computed without overflow or underflow.
+     *
+     * @return a new unit vector
+     */
     public Vector normalize() {
         // Scaling by the largest component first keeps the squares in range for any finite input.
         double m = maxAbsComponent();
@@ -87,7 +144,11 @@ public final class Vector extends Point {
         return new Vector(sx * inverseLength, sy * inverseLength, sz * inverseLength);
     }
 
-    /** The component-wise absolute value. */
+    /**
+     * The component-wise absolute value.
+     *
+     * @return a new vector of the absolute components
+     */
     public Vector abs() {
         return new Vector(Math.abs(x), Math.abs(y), Math.abs(z));
     }
@@ -99,6 +160,8 @@ public final class Vector extends Point {
     /**
      * Some unit vector perpendicular to this unit vector, by the branchless construction of Duff et al. 2017
      * ("Building an Orthonormal Basis, Revisited"). Stable for every direction, including negative zero z.
+     *
+     * @return a new unit vector perpendicular to this one
      */
     public Vector perpendicular() {
         double sign = Math.copySign(1.0, z);

@@ -27,6 +27,12 @@ public final class AtomicFile {
     /** What writes the content, given the temporary file to write it to. */
     @FunctionalInterface
     public interface Content {
+        /**
+         * Writes the whole content to {@code temp}.
+         *
+         * @param temp the temporary file beside the target, to be filled
+         * @throws IOException if writing fails; the temporary file is then deleted and the target left as it was
+         */
         void writeTo(Path temp) throws IOException;
     }
 
@@ -56,6 +62,12 @@ public final class AtomicFile {
     /**
      * Writes {@code file} (parent folders created as needed) and returns its absolute path; an I/O failure is an
      * {@link UncheckedIOException} whose message starts with {@code what} and the file.
+     *
+     * @param file the file to create or replace
+     * @param what what the file is, for the error message (e.g. "image")
+     * @param content writes the bytes to the temporary file
+     * @return the absolute path of the written file
+     * @throws UncheckedIOException if a folder cannot be created or the content cannot be written or moved into place
      */
     public static Path write(Path file, String what, Content content) {
         Path target = file.toAbsolutePath();

@@ -59,45 +59,86 @@ public final class Camera implements Cloneable {
 
     private Camera() {}
 
-    /** A builder for a new camera. */
+    /**
+     * A builder for a new camera.
+     *
+     * @return a builder with nothing set
+     */
     public static Builder getBuilder() {
         return new Builder();
     }
 
     // ------------------------------------------------------------------ settings users change between renders
 
-    /** Anti-aliasing: the beam of camera rays per pixel (NONE or one sample = one central ray). */
+    /**
+     * Anti-aliasing: the beam of camera rays per pixel (NONE or one sample = one central ray).
+     *
+     * @param config the camera rays per pixel; not null
+     * @return this camera
+     */
     public Camera setSamplingConfig(SamplingConfig config) {
         this.antiAliasing = Util.requireNonNull(config, "sampling config");
         return this;
     }
 
+    /**
+     * Anti-aliasing: the beam of camera rays per pixel.
+     *
+     * @return the sampling configuration, never null
+     */
     public SamplingConfig getSamplingConfig() {
         return antiAliasing;
     }
 
-    /** Render threads, at least 1. */
+    /**
+     * Render threads, at least 1.
+     *
+     * @param threads the number of render threads, at least 1
+     * @return this camera
+     * @throws IllegalArgumentException if {@code threads} is below 1
+     */
     public Camera setThreads(int threads) {
         if (threads < 1) throw new IllegalArgumentException("threads must be >= 1, but was " + threads);
         this.threads = threads;
         return this;
     }
 
+    /**
+     * The number of render threads.
+     *
+     * @return the thread count, at least 1
+     */
     public int getThreads() {
         return threads;
     }
 
-    /** Render with the BVH (true) or brute force over the same primitives (false). */
+    /**
+     * Render with the BVH (true) or brute force over the same primitives (false).
+     *
+     * @param useBvh true for the BVH, false for brute force
+     * @return this camera
+     */
     public Camera setBvh(boolean useBvh) {
         settings = settings.withBvh(useBvh);
         return this;
     }
 
+    /**
+     * Replaces all render settings (acceleration, planning, recursion, shadow and glossy sampling).
+     *
+     * @param settings the new settings; not null
+     * @return this camera
+     */
     public Camera setRenderSettings(RenderSettings settings) {
         this.settings = Util.requireNonNull(settings, "render settings");
         return this;
     }
 
+    /**
+     * The render settings.
+     *
+     * @return the settings, never null
+     */
     public RenderSettings getRenderSettings() {
         return settings;
     }
@@ -105,6 +146,11 @@ public final class Camera implements Cloneable {
     /**
      * Depth of field: a lens of {@code apertureRadius} (0 = pinhole) focused at {@code focalDistance} along the
      * view direction.
+     *
+     * @param focalDistance the distance of the focal plane along the view direction, positive and finite
+     * @param apertureRadius the lens radius, finite and at least 0 (0 = pinhole)
+     * @return this camera
+     * @throws IllegalArgumentException if a value is out of range
      */
     public Camera setDepthOfField(double focalDistance, double apertureRadius) {
         Util.requirePositive(focalDistance, "focal distance");
@@ -113,84 +159,166 @@ public final class Camera implements Cloneable {
         return this;
     }
 
-    /** The beam of lens samples per pixel sample for depth of field. */
+    /**
+     * The beam of lens samples per pixel sample for depth of field.
+     *
+     * @param config the lens samples per pixel sample; not null
+     * @return this camera
+     */
     public Camera setApertureSampling(SamplingConfig config) {
         Util.requireNonNull(config, "aperture sampling");
         this.apertureSampling = config;
         return this;
     }
 
+    /**
+     * Sets the listener told about render progress.
+     *
+     * @param listener called once per finished tile from the render threads, or null for none
+     * @return this camera
+     */
     public Camera setProgressListener(ProgressListener listener) {
         this.progress = listener;
         return this;
     }
 
-    /** Where the camera is. */
+    /**
+     * Where the camera is.
+     *
+     * @return the camera position
+     */
     public Point getLocation() {
         return location;
     }
 
-    /** The unit view direction. */
+    /**
+     * The unit view direction.
+     *
+     * @return the view direction
+     */
     public Vector getDirection() {
         return vTo;
     }
 
-    /** The unit up direction (perpendicular to the view direction). */
+    /**
+     * The unit up direction (perpendicular to the view direction).
+     *
+     * @return the up direction
+     */
     public Vector getUp() {
         return vUp;
     }
 
+    /**
+     * The view plane's width.
+     *
+     * @return the width in scene units
+     */
     public double getVpWidth() {
         return vpWidth;
     }
 
+    /**
+     * The view plane's height.
+     *
+     * @return the height in scene units
+     */
     public double getVpHeight() {
         return vpHeight;
     }
 
+    /**
+     * The distance from the camera to the view plane.
+     *
+     * @return the distance in scene units
+     */
     public double getVpDistance() {
         return vpDistance;
     }
 
-    /** The lens radius (0 for a pinhole). */
+    /**
+     * The lens radius (0 for a pinhole).
+     *
+     * @return the aperture radius in scene units
+     */
     public double getApertureRadius() {
         return apertureRadius;
     }
 
-    /** The distance of the focal plane (0 when depth of field was never set). */
+    /**
+     * The distance of the focal plane (0 when depth of field was never set).
+     *
+     * @return the focal distance in scene units, or 0
+     */
     public double getFocalDistance() {
         return focalDistance;
     }
 
+    /**
+     * The beam of lens samples per pixel sample for depth of field.
+     *
+     * @return the aperture sampling configuration
+     */
     public SamplingConfig getApertureSampling() {
         return apertureSampling;
     }
 
+    /**
+     * The ray tracer that computes the colour of each ray.
+     *
+     * @return the ray tracer
+     */
     public RayTracerBase getRayTracer() {
         return rayTracer;
     }
 
+    /**
+     * The image width.
+     *
+     * @return the number of pixel columns
+     */
     public int getNx() {
         return nX;
     }
 
+    /**
+     * The image height.
+     *
+     * @return the number of pixel rows
+     */
     public int getNy() {
         return nY;
     }
 
-    /** The statistics of the last render, or null before the first. */
+    /**
+     * The statistics of the last render, or null before the first.
+     *
+     * @return the statistics, or null
+     */
     public RenderStatistics getLastStatistics() {
         return lastStatistics;
     }
 
-    /** The image of the last render, or null before the first. */
+    /**
+     * The image of the last render, or null before the first.
+     *
+     * @return the image, or null
+     */
     public ImageWriter getImage() {
         return image;
     }
 
     // ------------------------------------------------------------------ rays
 
-    /** The ray from the camera through the centre of pixel (j, i): column j from the left, row i from the top. */
+    /**
+     * The ray from the camera through the centre of pixel (j, i): column j from the left, row i from the top.
+     *
+     * @param nX the number of pixel columns of the view plane
+     * @param nY the number of pixel rows of the view plane
+     * @param j the 0-based pixel column, from the left
+     * @param i the 0-based pixel row, from the top
+     * @return a new ray from the camera location through the pixel's centre
+     */
     public Ray constructRay(int nX, int nY, int j, int i) {
         double u = (j - (nX - 1) / 2.0) * (vpWidth / nX);
         double v = -(i - (nY - 1) / 2.0) * (vpHeight / nY);
@@ -212,7 +340,11 @@ public final class Camera implements Cloneable {
 
     // ------------------------------------------------------------------ rendering
 
-    /** Renders the scene into a new image; statistics are in {@link #getLastStatistics()}. */
+    /**
+     * Renders the scene into a new image; statistics are in {@link #getLastStatistics()}.
+     *
+     * @return this camera
+     */
     public Camera renderImage() {
         ImageWriter target = new ImageWriter("render", nX, nY);
         lastStatistics = render(0, 0, nX, nY, target::writePixel);
@@ -229,6 +361,11 @@ public final class Camera implements Cloneable {
      *
      * <p>Statistics of this region are in {@link #getLastStatistics()}; {@link #getImage()} is not changed.
      *
+     * @param x0 the 0-based leftmost column
+     * @param y0 the 0-based top row
+     * @param width the number of columns, at least 1
+     * @param height the number of rows, at least 1
+     * @return the rendered pixels
      * @throws IllegalArgumentException if the rectangle is empty or not inside the image
      */
     public ImageRegion renderRegion(int x0, int y0, int width, int height) {
@@ -347,7 +484,13 @@ public final class Camera implements Cloneable {
         }
     }
 
-    /** Writes the last rendered image to {@code images/<name>.png} and returns its path. */
+    /**
+     * Writes the last rendered image to {@code images/<name>.png} and returns its path.
+     *
+     * @param name the file name without extension; may contain sub-folders, not ".."
+     * @return the absolute path of the written file
+     * @throws IllegalStateException if nothing has been rendered yet
+     */
     public Path writeToImage(String name) {
         if (image == null) throw new IllegalStateException("renderImage() must be called before writeToImage()");
         ImageWriter named = new ImageWriter(name, nX, nY);
@@ -355,7 +498,13 @@ public final class Camera implements Cloneable {
         return named.writeToImage();
     }
 
-    /** Writes the last rendered image as PNG to {@code file}. */
+    /**
+     * Writes the last rendered image as PNG to {@code file}.
+     *
+     * @param file the PNG file to create or replace
+     * @return the absolute path of the written file
+     * @throws IllegalStateException if nothing has been rendered yet
+     */
     public Path writeToImage(Path file) {
         if (image == null) throw new IllegalStateException("renderImage() must be called before writeToImage()");
         return image.writeToImage(file);
@@ -544,6 +693,12 @@ public final class Camera implements Cloneable {
 
         private Builder() {}
 
+        /**
+         * Sets where the camera is.
+         *
+         * @param location the camera position; not null
+         * @return this builder
+         */
         public Builder setLocation(Point location) {
             camera.location = Util.requireNonNull(location, "camera location");
             return this;
@@ -552,6 +707,11 @@ public final class Camera implements Cloneable {
         /**
          * The view direction {@code to} and the up direction; up need not be exactly perpendicular (its component
          * along {@code to} is removed) but must not be parallel to it.
+         *
+         * @param to the view direction, any length; not null
+         * @param up the approximate up direction, any length; not null
+         * @return this builder
+         * @throws IllegalArgumentException if a direction is null or {@code up} is parallel to {@code to}
          */
         public Builder setDirection(Vector to, Vector up) {
             Util.requireNonNull(to, "camera direction 'to'");
@@ -570,7 +730,16 @@ public final class Camera implements Cloneable {
             return this;
         }
 
-        /** Looks at {@code target} from the location (set the location first) with the given up direction. */
+        /**
+         * Looks at {@code target} from the location (set the location first) with the given up direction.
+         *
+         * @param target the point at the image centre, different from the location; not null
+         * @param up the approximate up direction, not parallel to the view; not null
+         * @return this builder
+         * @throws IllegalStateException if the location is not set yet
+         * @throws IllegalArgumentException if {@code target} is null or equals the location, or {@code up} is parallel
+         *     to the view
+         */
         public Builder setDirection(Point target, Vector up) {
             Util.requireNonNull(target, "camera target");
             if (camera.location == null) {
@@ -582,7 +751,13 @@ public final class Camera implements Cloneable {
             return setDirection(target.subtract(camera.location), up);
         }
 
-        /** Looks at {@code target} with +Y as up (or +Z when looking straight along Y). */
+        /**
+         * Looks at {@code target} with +Y as up (or +Z when looking straight along Y).
+         *
+         * @param target the point at the image centre, different from the location; not null
+         * @return this builder
+         * @throws IllegalStateException if the location is not set yet
+         */
         public Builder setDirection(Point target) {
             Util.requireNonNull(target, "camera target");
             if (camera.location == null) {
@@ -592,7 +767,13 @@ public final class Camera implements Cloneable {
             return setDirection(to, Math.abs(to.y) > 0.999999 ? Vector.AXIS_Z : Vector.AXIS_Y);
         }
 
-        /** View-plane width and height, in scene units. */
+        /**
+         * View-plane width and height, in scene units.
+         *
+         * @param width the view plane width, positive and finite
+         * @param height the view plane height, positive and finite
+         * @return this builder
+         */
         public Builder setVpSize(double width, double height) {
             Util.requirePositive(width, "view plane width");
             camera.vpHeight = Util.requirePositive(height, "view plane height");
@@ -600,13 +781,25 @@ public final class Camera implements Cloneable {
             return this;
         }
 
-        /** Distance from the camera to the view plane. */
+        /**
+         * Distance from the camera to the view plane.
+         *
+         * @param distance the view plane distance, positive and finite
+         * @return this builder
+         */
         public Builder setVpDistance(double distance) {
             camera.vpDistance = Util.requirePositive(distance, "view plane distance");
             return this;
         }
 
-        /** Image resolution in pixels. */
+        /**
+         * Image resolution in pixels.
+         *
+         * @param nX the number of pixel columns, at least 1
+         * @param nY the number of pixel rows, at least 1
+         * @return this builder
+         * @throws IllegalArgumentException if a dimension is below 1
+         */
         public Builder setResolution(int nX, int nY) {
             if (nX < 1 || nY < 1) {
                 throw new IllegalArgumentException("resolution must be positive, but was " + nX + " x " + nY);
@@ -616,11 +809,24 @@ public final class Camera implements Cloneable {
             return this;
         }
 
+        /**
+         * Sets the ray tracer.
+         *
+         * @param rayTracer the tracer of the scene; not null
+         * @return this builder
+         */
         public Builder setRayTracer(RayTracerBase rayTracer) {
             camera.rayTracer = Util.requireNonNull(rayTracer, "ray tracer");
             return this;
         }
 
+        /**
+         * Sets a new ray tracer of the given type on {@code scene}.
+         *
+         * @param scene the scene to render; not null
+         * @param type the kind of ray tracer; not null
+         * @return this builder
+         */
         public Builder setRayTracer(Scene scene, RayTracerType type) {
             Util.requireNonNull(scene, "scene");
             Util.requireNonNull(type, "ray tracer type");
@@ -630,42 +836,91 @@ public final class Camera implements Cloneable {
             return this;
         }
 
+        /**
+         * Sets the number of render threads; see {@link Camera#setThreads}.
+         *
+         * @param threads the number of render threads, at least 1
+         * @return this builder
+         */
         public Builder setThreads(int threads) {
             camera.setThreads(threads);
             return this;
         }
 
+        /**
+         * Chooses the BVH or brute force; see {@link Camera#setBvh}.
+         *
+         * @param useBvh true for the BVH, false for brute force
+         * @return this builder
+         */
         public Builder setBvh(boolean useBvh) {
             camera.setBvh(useBvh);
             return this;
         }
 
+        /**
+         * Sets all render settings; see {@link Camera#setRenderSettings}.
+         *
+         * @param settings the render settings; not null
+         * @return this builder
+         */
         public Builder setRenderSettings(RenderSettings settings) {
             camera.setRenderSettings(settings);
             return this;
         }
 
+        /**
+         * Sets the anti-aliasing; see {@link Camera#setSamplingConfig}.
+         *
+         * @param config the camera rays per pixel; not null
+         * @return this builder
+         */
         public Builder setSamplingConfig(SamplingConfig config) {
             camera.setSamplingConfig(config);
             return this;
         }
 
+        /**
+         * Sets depth of field; see {@link Camera#setDepthOfField}.
+         *
+         * @param focalDistance the distance of the focal plane, positive and finite
+         * @param apertureRadius the lens radius, finite and at least 0 (0 = pinhole)
+         * @return this builder
+         */
         public Builder setDepthOfField(double focalDistance, double apertureRadius) {
             camera.setDepthOfField(focalDistance, apertureRadius);
             return this;
         }
 
+        /**
+         * Sets the lens sampling; see {@link Camera#setApertureSampling}.
+         *
+         * @param config the lens samples per pixel sample; not null
+         * @return this builder
+         */
         public Builder setApertureSampling(SamplingConfig config) {
             camera.setApertureSampling(config);
             return this;
         }
 
+        /**
+         * Sets the progress listener; see {@link Camera#setProgressListener}.
+         *
+         * @param listener called once per finished tile, or null for none
+         * @return this builder
+         */
         public Builder setProgressListener(ProgressListener listener) {
             camera.setProgressListener(listener);
             return this;
         }
 
-        /** The camera; fails naming the first missing setting. */
+        /**
+         * The camera; fails naming the first missing setting.
+         *
+         * @return a new camera with the builder's settings
+         * @throws IllegalStateException if a required setting is missing, or an aperture is set without a focal
+         *     distance
+         */
         public Camera build() {
             List<String> missing = new ArrayList<>();
             if (camera.location == null) missing.add("location (setLocation)");

@@ -88,7 +88,13 @@ public final class EffectPlan {
         return setting;
     }
 
-    /** The plan for rendering {@code scene} with {@code settings}. */
+    /**
+     * The plan for rendering {@code scene} with {@code settings}.
+     *
+     * @param scene the scene to render
+     * @param settings the render settings
+     * @return the plan: which effects are simulated and which are skipped, with reasons
+     */
     public static EffectPlan of(Scene scene, RenderSettings settings) {
         return new EffectPlan(scene, settings);
     }
@@ -106,22 +112,38 @@ public final class EffectPlan {
         return true;
     }
 
-    /** Whether work that cannot change the image is skipped. */
+    /**
+     * Whether work that cannot change the image is skipped.
+     *
+     * @return true when planning is on
+     */
     public boolean isPlanning() {
         return planning;
     }
 
-    /** The effects simulated. */
+    /**
+     * The effects simulated.
+     *
+     * @return an unmodifiable list of the simulated effects, one description each
+     */
     public List<String> simulated() {
         return List.copyOf(simulated);
     }
 
-    /** The effects skipped, each with its reason. */
+    /**
+     * The effects skipped, each with its reason.
+     *
+     * @return an unmodifiable list of the skipped effects, each with its reason
+     */
     public List<String> skipped() {
         return List.copyOf(skipped);
     }
 
-    /** A readable two-line summary. */
+    /**
+     * A readable two-line summary.
+     *
+     * @return the lines {@code simulated: ...} and {@code skipped: ...}, plus a third when planning is off
+     */
     public String describe() {
         return "simulated: " + String.join("; ", simulated) + "\nskipped:   "
                 + (skipped.isEmpty() ? "nothing" : String.join("; ", skipped))

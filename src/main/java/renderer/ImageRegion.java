@@ -14,7 +14,9 @@ import primitives.Color;
 public final class ImageRegion implements Serializable {
     private static final long serialVersionUID = 1L;
 
+    /** The leftmost column and top row (image coordinates) and the size in pixels. */
     private final int x0, y0, width, height;
+    /** Red, green and blue of each pixel, row by row. */
     private final double[] pixels;
 
     /** An all-black region, checked to lie inside an image of {@code nX} x {@code nY} pixels. */
@@ -33,20 +35,38 @@ public final class ImageRegion implements Serializable {
         this.pixels = new double[3 * width * height];
     }
 
-    /** Leftmost column, in image coordinates. */
+    /**
+     * Leftmost column, in image coordinates.
+     *
+     * @return the 0-based column of the region's left edge
+     */
     public int getX0() {
         return x0;
     }
 
-    /** Top row, in image coordinates. */
+    /**
+     * Top row, in image coordinates.
+     *
+     * @return the 0-based row of the region's top edge
+     */
     public int getY0() {
         return y0;
     }
 
+    /**
+     * The number of columns.
+     *
+     * @return the width in pixels, at least 1
+     */
     public int getWidth() {
         return width;
     }
 
+    /**
+     * The number of rows.
+     *
+     * @return the height in pixels, at least 1
+     */
     public int getHeight() {
         return height;
     }
@@ -63,7 +83,13 @@ public final class ImageRegion implements Serializable {
         pixels[o + 2] = blue;
     }
 
-    /** The linear colour of pixel (x, y) of the image, which must lie in this region. */
+    /**
+     * The linear colour of pixel (x, y) of the image, which must lie in this region.
+     *
+     * @param x the 0-based column in the image
+     * @param y the 0-based row in the image
+     * @return a new colour of the pixel's unclamped channels
+     */
     public Color getPixel(int x, int y) {
         int o = offset(x, y);
         return new Color(pixels[o], pixels[o + 1], pixels[o + 2]);

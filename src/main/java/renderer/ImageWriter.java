@@ -22,6 +22,9 @@ public class ImageWriter {
 
     /**
      * @param imageName file name without extension; may contain sub-folders, not ".."
+     * @param nX the image width in pixels, at least 1
+     * @param nY the image height in pixels, at least 1, with {@code nX * nY} at most 2^28
+     * @throws IllegalArgumentException if the name is invalid or the resolution is not positive or too large
      */
     public ImageWriter(String imageName, int nX, int nY) {
         this.imageName = validateName(imageName);
@@ -49,24 +52,54 @@ public class ImageWriter {
         return name;
     }
 
+    /**
+     * The image's name: its file name without extension.
+     *
+     * @return the name, possibly with sub-folders
+     */
     public String getImageName() {
         return imageName;
     }
 
+    /**
+     * The image width.
+     *
+     * @return the number of columns
+     */
     public int getNx() {
         return nX;
     }
 
+    /**
+     * The image height.
+     *
+     * @return the number of rows
+     */
     public int getNy() {
         return nY;
     }
 
-    /** Sets pixel (x, y), x to the right and y downward from the top-left corner. */
+    /**
+     * Sets pixel (x, y), x to the right and y downward from the top-left corner.
+     *
+     * @param xIndex the 0-based column
+     * @param yIndex the 0-based row
+     * @param color the linear colour; not NaN
+     */
     public void writePixel(int xIndex, int yIndex, Color color) {
         writePixel(xIndex, yIndex, color.getR(), color.getG(), color.getB());
     }
 
-    /** Sets pixel (x, y) to the linear colour (red, green, blue). */
+    /**
+     * Sets pixel (x, y) to the linear colour (red, green, blue).
+     *
+     * @param xIndex the 0-based column
+     * @param yIndex the 0-based row
+     * @param red the red channel on the 0..255 scale, not NaN (not clamped)
+     * @param green the green channel on the 0..255 scale, not NaN (not clamped)
+     * @param blue the blue channel on the 0..255 scale, not NaN (not clamped)
+     * @throws IllegalArgumentException if the pixel is outside the image or a channel is NaN
+     */
     public void writePixel(int xIndex, int yIndex, double red, double green, double blue) {
         checkIndex(xIndex, yIndex);
         if (Double.isNaN(red) || Double.isNaN(green) || Double.isNaN(blue)) {
@@ -83,6 +116,7 @@ public class ImageWriter {
      * Copies the pixels of a region (e.g. one rendered by {@link Camera#renderRegion} on another machine) into
      * this image at the region's place; regions that cover the image together build it exactly.
      *
+     * @param region the rendered region to copy
      * @throws IllegalArgumentException if the region does not lie inside this image
      */
     public void writeRegion(ImageRegion region) {
@@ -94,7 +128,13 @@ public class ImageWriter {
         for (int y = y0; y < y0 + h; y++) region.copyRow(y, pixels, 3 * (y * nX + x0));
     }
 
-    /** The linear (unclamped) colour of pixel (x, y). */
+    /**
+     * The linear (unclamped) colour of pixel (x, y).
+     *
+     * @param xIndex the 0-based column
+     * @param yIndex the 0-based row
+     * @return a new colour of the pixel's channels
+     */
     public Color getPixel(int xIndex, int yIndex) {
         checkIndex(xIndex, yIndex);
         int o = 3 * (yIndex * nX + xIndex);
@@ -108,7 +148,11 @@ public class ImageWriter {
         }
     }
 
-    /** The image as 8-bit RGB, each channel clamped to 0..255 and rounded. */
+    /**
+     * The image as 8-bit RGB, each channel clamped to 0..255 and rounded.
+     *
+     * @return a new image of the same size
+     */
     public BufferedImage toBufferedImage() {
         BufferedImage image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < nY; y++) {
@@ -126,7 +170,11 @@ public class ImageWriter {
         return (int) Math.round(value);
     }
 
-    /** Writes {@code images/<name>.png} (folders created as needed) and returns its path. */
+    /**
+     * Writes {@code images/<name>.png} (folders created as needed) and returns its path.
+     *
+     * @return the absolute path of the written file
+     */
     public Path writeToImage() {
         return writeToImage(DEFAULT_FOLDER.resolve(imageName + ".png"));
     }
@@ -134,6 +182,10 @@ public class ImageWriter {
     /**
      * Writes the image as PNG to {@code file}, creating missing parent folders. The bytes go to a temporary
      * file beside it first and are moved into place only when complete.
+     *
+     * @param file the PNG file to create or replace
+     * @return the absolute path of the written file
+     * @throws java.io.UncheckedIOException if the file cannot be written
      */
     public Path writeToImage(Path file) {
         return AtomicFile.write(file, "image", temp -> {

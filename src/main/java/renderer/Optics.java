@@ -6,7 +6,14 @@ import primitives.Vector;
 public final class Optics {
     private Optics() {}
 
-    /** Mirror direction {@code v - 2 (v.n) n}; {@code nv} is {@code v.n}. */
+    /**
+     * Mirror direction {@code v - 2 (v.n) n}; {@code nv} is {@code v.n}.
+     *
+     * @param v the incoming direction
+     * @param n the unit normal
+     * @param nv the dot product {@code v.n}
+     * @return the reflected direction
+     */
     public static Vector reflect(Vector v, Vector n, double nv) {
         double f = 2 * nv;
         return new Vector(v.x - f * n.x, v.y - f * n.y, v.z - f * n.z);
@@ -17,6 +24,12 @@ public final class Optics {
      * ({@code nv} is {@code v.n}; entering when negative) and relative index {@code indexOfRefraction}. At and beyond
      * the critical angle the light is totally reflected (the grazing refracted ray at exactly the critical angle
      * would run along the surface, so it is reflected too). An index of 1 passes straight through, bit for bit.
+     *
+     * @param v the incoming unit direction
+     * @param n the outward unit normal
+     * @param nv the dot product {@code v.n}: negative when entering, positive when leaving
+     * @param indexOfRefraction the index of the inside relative to the outside
+     * @return the refracted unit direction, or the mirror direction on total internal reflection
      */
     public static Vector refract(Vector v, Vector n, double nv, double indexOfRefraction) {
         double[] d = new double[3];
@@ -24,7 +37,20 @@ public final class Optics {
         return new Vector(d[0], d[1], d[2]);
     }
 
-    /** {@link #refract(Vector, Vector, double, double)} on coordinates, writing the direction to {@code out[0..3)}. */
+    /**
+     * {@link #refract(Vector, Vector, double, double)} on coordinates, writing the direction to {@code out[0..3)}.
+     *
+     * @param vx the incoming direction's x component
+     * @param vy the incoming direction's y component
+     * @param vz the incoming direction's z component
+     * @param nx the outward unit normal's x component
+     * @param ny the outward unit normal's y component
+     * @param nz the outward unit normal's z component
+     * @param nv the dot product {@code v.n}: negative when entering, positive when leaving
+     * @param indexOfRefraction the index of the inside relative to the outside
+     * @param out receives the refracted (or, on total internal reflection, mirrored) direction in its first three
+     *     elements
+     */
     public static void refract(
             double vx,
             double vy,
@@ -66,7 +92,14 @@ public final class Optics {
         out[2] = eta * vz + f * nz;
     }
 
-    /** Whether light along unit {@code v} is totally reflected at a surface with normal {@code n}. */
+    /**
+     * Whether light along unit {@code v} is totally reflected at a surface with normal {@code n}.
+     *
+     * @param v the incoming unit direction
+     * @param n the outward unit normal
+     * @param indexOfRefraction the index of the inside relative to the outside
+     * @return true when no light is refracted
+     */
     public static boolean isTotallyReflected(Vector v, Vector n, double indexOfRefraction) {
         double cosI = -v.dotProduct(n);
         double eta = cosI > 0 ? 1 / indexOfRefraction : indexOfRefraction;

@@ -5,9 +5,13 @@ package renderer;
  * render thread owns one and they are summed once at the end.
  */
 public final class RayCounters {
+    /** Camera rays, one per sample of a pixel. */
     public long camera;
+    /** Shadow rays toward lights. */
     public long shadow;
+    /** Reflection rays. */
     public long reflection;
+    /** Refraction rays. */
     public long refraction;
     /** Secondary rays of rough (glossy or frosted) surfaces; also counted as reflection or refraction. */
     public long glossy;
@@ -20,7 +24,11 @@ public final class RayCounters {
     /** Shadow rays those lights would have cost at the least (one per hard light, the probes of an adaptive disk). */
     public long shadowRaysCutOff;
 
-    /** Adds another thread's counts to these. */
+    /**
+     * Adds another thread's counts to these.
+     *
+     * @param other the counts added; unchanged
+     */
     public void add(RayCounters other) {
         camera += other.camera;
         shadow += other.shadow;
@@ -33,7 +41,11 @@ public final class RayCounters {
         shadowRaysCutOff += other.shadowRaysCutOff;
     }
 
-    /** All rays fired. */
+    /**
+     * All rays fired.
+     *
+     * @return camera, shadow, reflection and refraction rays summed
+     */
     public long total() {
         return camera + shadow + reflection + refraction;
     }

@@ -11,49 +11,93 @@ import scene.Scene;
  * {@link #traceRay(Ray)} is the single-ray convenience of the course API.
  */
 public abstract class RayTracerBase {
+    /** The scene traced. */
     protected final Scene scene;
+
     private TraceContext convenienceContext;
 
+    /**
+     * A tracer of {@code scene}; call {@link #prepare} before tracing.
+     *
+     * @param scene the scene to trace; not null
+     */
     protected RayTracerBase(Scene scene) {
         this.scene = Util.requireNonNull(scene, "scene");
     }
 
+    /**
+     * The scene traced.
+     *
+     * @return the scene given to the constructor
+     */
     public Scene getScene() {
         return scene;
     }
 
-    /** Compiles the scene for rendering with {@code settings}; must precede tracing. */
+    /**
+     * Compiles the scene for rendering with {@code settings}; must precede tracing.
+     *
+     * @param settings the render settings the scene is compiled for
+     */
     public abstract void prepare(RenderSettings settings);
 
-    /** Whether {@link #prepare} has been called. */
+    /**
+     * Whether {@link #prepare} has been called.
+     *
+     * @return true once the scene has been compiled
+     */
     public abstract boolean isPrepared();
 
     /**
      * Traces {@code ray} and leaves the colour seen along it in {@code context.red}, {@code green} and
      * {@code blue}: the render loop's entry, which allocates nothing. {@code pathSeed} identifies the path (pixel
      * and sample) so that every random decision below it is reproducible whatever thread traces it.
+     *
+     * @param ray the ray to trace
+     * @param context the calling thread's scratch state, receiving the colour
+     * @param pathSeed the seed identifying the pixel and sample the path belongs to
      */
     public abstract void trace(Ray ray, TraceContext context, long pathSeed);
 
-    /** The colour seen along {@code ray}: {@link #trace} returning a {@link Color}. */
+    /**
+     * The colour seen along {@code ray}: {@link #trace} returning a {@link Color}.
+     *
+     * @param ray the ray to trace
+     * @param context the calling thread's scratch state
+     * @param pathSeed the seed identifying the pixel and sample the path belongs to
+     * @return a new colour, unclamped
+     */
     public Color traceRay(Ray ray, TraceContext context, long pathSeed) {
         trace(ray, context, pathSeed);
         return context.color();
     }
 
-    /** The colour along one ray, preparing with default settings if needed (not thread-safe). */
+    /**
+     * The colour along one ray, preparing with default settings if needed (not thread-safe).
+     *
+     * @param ray the ray to trace
+     * @return a new colour, unclamped
+     */
     public Color traceRay(Ray ray) {
         if (!isPrepared()) prepare(RenderSettings.DEFAULT);
         if (convenienceContext == null) convenienceContext = new TraceContext();
         return traceRay(ray, convenienceContext, scene.getSeed());
     }
 
-    /** A one-line description of what the last {@link #prepare} decided to simulate, for render reports. */
+    /**
+     * A one-line description of what the last {@link #prepare} decided to simulate, for render reports.
+     *
+     * @return the description, empty when this tracer does not plan
+     */
     public String describePlan() {
         return "";
     }
 
-    /** Seconds the last {@link #prepare} spent compiling the scene. */
+    /**
+     * Seconds the last {@link #prepare} spent compiling the scene.
+     *
+     * @return the compile time in seconds, 0 when this tracer does not report it
+     */
     public double preparationSeconds() {
         return 0;
     }

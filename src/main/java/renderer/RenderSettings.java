@@ -37,15 +37,15 @@ public record RenderSettings(
         double lightCutoff) {
 
     /**
-     * BVH on, planning on, 10 levels, recursion cut below attenuation 0.001, jittered shadows, 16 jittered glossy
-     * rays, light cut-off half a display step.
-     */
-    /**
      * Deepest recursion allowed: far beyond what any image needs (each level is a bounce; paths fade long before),
      * and shallow enough that two perfect mirrors facing each other cannot overflow a render thread's stack.
      */
     public static final int MAX_LEVEL = 256;
 
+    /**
+     * BVH on, planning on, 10 levels, recursion cut below attenuation 0.001, jittered shadows, 16 jittered glossy
+     * rays, light cut-off half a display step.
+     */
     public static final RenderSettings DEFAULT = new RenderSettings(
             true,
             Accelerator.DEFAULT_BINS,
@@ -58,6 +58,21 @@ public record RenderSettings(
             new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED),
             0.5);
 
+    /**
+     * Checks every setting.
+     *
+     * @param useBvh search with the BVH (true) or by brute force (false)
+     * @param bvhBins SAH bins per node, 2..256
+     * @param bvhMaxLeafSize most primitives per leaf, 1..64
+     * @param planEffects skip work whose contribution is provably zero
+     * @param maxLevel deepest recursion of reflection and refraction, 1 to {@link #MAX_LEVEL}
+     * @param minAttenuation the attenuation below which recursion stops, in [0, 1)
+     * @param shadowPattern placement of shadow rays on a light's disk; not null
+     * @param adaptiveShadows probe a few shadow rays first and fire the rest only where they disagree
+     * @param glossySampling rays per glossy reflection or frosted refraction; not null
+     * @param lightCutoff display steps of direct light a camera sample may leave out, in [0, 255]
+     * @throws IllegalArgumentException if a setting is out of range or null
+     */
     public RenderSettings {
         if (bvhBins < 2 || bvhBins > 256) {
             throw new IllegalArgumentException("bvhBins must be in [2, 256], but was " + bvhBins);
@@ -78,6 +93,12 @@ public record RenderSettings(
         }
     }
 
+    /**
+     * These settings with the BVH turned on or off.
+     *
+     * @param on true to search with the BVH, false for brute force
+     * @return a modified copy
+     */
     public RenderSettings withBvh(boolean on) {
         return new RenderSettings(
                 on,
@@ -92,6 +113,14 @@ public record RenderSettings(
                 lightCutoff);
     }
 
+    /**
+     * These settings with other BVH build parameters.
+     *
+     * @param bins SAH bins per node, 2..256
+     * @param maxLeafSize most primitives per leaf, 1..64
+     * @return a modified copy
+     * @throws IllegalArgumentException if a parameter is out of range
+     */
     public RenderSettings withBvhBuild(int bins, int maxLeafSize) {
         return new RenderSettings(
                 useBvh,
@@ -106,6 +135,12 @@ public record RenderSettings(
                 lightCutoff);
     }
 
+    /**
+     * These settings with effect planning turned on or off.
+     *
+     * @param on true to skip work that cannot change the image, false to fire it anyway
+     * @return a modified copy
+     */
     public RenderSettings withPlanEffects(boolean on) {
         return new RenderSettings(
                 useBvh,
@@ -120,6 +155,14 @@ public record RenderSettings(
                 lightCutoff);
     }
 
+    /**
+     * These settings with other recursion limits.
+     *
+     * @param maxLevel deepest recursion of reflection and refraction, 1 to {@link #MAX_LEVEL}
+     * @param minAttenuation the attenuation below which recursion stops, in [0, 1)
+     * @return a modified copy
+     * @throws IllegalArgumentException if a limit is out of range
+     */
     public RenderSettings withRecursion(int maxLevel, double minAttenuation) {
         return new RenderSettings(
                 useBvh,
@@ -134,6 +177,13 @@ public record RenderSettings(
                 lightCutoff);
     }
 
+    /**
+     * These settings with another sampling of soft shadows.
+     *
+     * @param pattern placement of shadow rays on a light's disk; not null
+     * @param adaptive true to probe a few shadow rays first and fire the rest only where they disagree
+     * @return a modified copy
+     */
     public RenderSettings withShadowSampling(SamplingPattern pattern, boolean adaptive) {
         return new RenderSettings(
                 useBvh,
@@ -148,6 +198,12 @@ public record RenderSettings(
                 lightCutoff);
     }
 
+    /**
+     * These settings with another sampling of glossy reflection and frosted refraction.
+     *
+     * @param glossy the rays per rough bounce and their pattern; not null
+     * @return a modified copy
+     */
     public RenderSettings withGlossySampling(SamplingConfig glossy) {
         return new RenderSettings(
                 useBvh,
@@ -162,7 +218,13 @@ public record RenderSettings(
                 lightCutoff);
     }
 
-    /** The light cut-off in display steps (0 = exact); see the class description. */
+    /**
+     * The light cut-off in display steps (0 = exact); see the class description.
+     *
+     * @param displaySteps the cut-off in display steps, in [0, 255]
+     * @return a modified copy
+     * @throws IllegalArgumentException if {@code displaySteps} is outside [0, 255]
+     */
     public RenderSettings withLightCutoff(double displaySteps) {
         return new RenderSettings(
                 useBvh,

@@ -25,12 +25,20 @@ public record RenderStatistics(
         long primitiveTests,
         String plan) {
 
-    /** Rays of every kind per second of wall time, in millions. */
+    /**
+     * Rays of every kind per second of wall time, in millions.
+     *
+     * @return millions of rays per second, preparation time excluded
+     */
     public double megaRaysPerSecond() {
         return rays.total() / Math.max(wallSeconds - preparationSeconds, 1e-9) * 1e-6;
     }
 
-    /** A readable multi-line report. */
+    /**
+     * A readable multi-line report.
+     *
+     * @return the report, one fact per line
+     */
     public String format() {
         StringBuilder s = new StringBuilder();
         s.append(String.format(

@@ -48,6 +48,11 @@ public class SimpleRayTracer extends RayTracerBase {
     private double minAttenuation;
     private double ambientR, ambientG, ambientB;
 
+    /**
+     * A tracer of {@code scene}; call {@link #prepare} before tracing.
+     *
+     * @param scene the scene to trace; not null
+     */
     public SimpleRayTracer(Scene scene) {
         super(scene);
     }
@@ -81,7 +86,11 @@ public class SimpleRayTracer extends RayTracerBase {
         return accelerator == null ? 0 : accelerator.buildSeconds();
     }
 
-    /** The compiled geometry of the last {@link #prepare} (for statistics and benchmarks). */
+    /**
+     * The compiled geometry of the last {@link #prepare} (for statistics and benchmarks).
+     *
+     * @return the search structure, or null before the first {@link #prepare}
+     */
     public Accelerator getAccelerator() {
         return accelerator;
     }

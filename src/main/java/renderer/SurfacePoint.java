@@ -18,6 +18,7 @@ import primitives.Vector;
  * the origin nor a missed thin gap near it, and no fixed epsilon.
  */
 public final class SurfacePoint {
+    /** The geometry hit. */
     public Geometry geometry;
     /** The refined hit point. */
     public double px, py, pz;
@@ -39,12 +40,21 @@ public final class SurfacePoint {
     /** An empty point, to be {@link #set} before use. */
     public SurfacePoint() {}
 
-    /** Copies a completed hit ({@link Geometry#completeHit} must have filled it). */
+    /**
+     * Copies a completed hit ({@link Geometry#completeHit} must have filled it).
+     *
+     * @param hit the completed hit record
+     */
     public SurfacePoint(HitRecord hit) {
         set(hit);
     }
 
-    /** Copies a completed hit into this point. */
+    /**
+     * Copies a completed hit into this point.
+     *
+     * @param hit the completed hit record
+     * @return this point
+     */
     public SurfacePoint set(HitRecord hit) {
         geometry = hit.geometry;
         px = hit.px;
@@ -62,33 +72,63 @@ public final class SurfacePoint {
         return this;
     }
 
-    /** The point (allocates; the tracer reads the fields). */
+    /**
+     * The point (allocates; the tracer reads the fields).
+     *
+     * @return a new point of the position
+     */
     public Point point() {
         return new Point(px, py, pz);
     }
 
-    /** The geometric normal (allocates). */
+    /**
+     * The geometric normal (allocates).
+     *
+     * @return a new unit vector of the geometric normal
+     */
     public Vector normal() {
         return new Vector(nx, ny, nz);
     }
 
-    /** The shading normal (allocates). */
+    /**
+     * The shading normal (allocates).
+     *
+     * @return a new unit vector of the shading normal
+     */
     public Vector shadingNormal() {
         return new Vector(snx, sny, snz);
     }
 
-    /** A ray leaving this point in {@code direction}, from the offset origin. */
+    /**
+     * A ray leaving this point in {@code direction}, from the offset origin.
+     *
+     * @param direction the direction of the new ray
+     * @return a new ray from the offset origin
+     */
     public Ray spawnRay(Vector direction) {
         return new Ray(spawnOrigin(direction.x, direction.y, direction.z), direction);
     }
 
-    /** The origin of a ray leaving this point in direction (dx, dy, dz) (allocates; see {@link #spawn}). */
+    /**
+     * The origin of a ray leaving this point in direction (dx, dy, dz) (allocates; see {@link #spawn}).
+     *
+     * @param dx the ray direction's x component
+     * @param dy the ray direction's y component
+     * @param dz the ray direction's z component
+     * @return a new point: the offset origin
+     */
     public Point spawnOrigin(double dx, double dy, double dz) {
         spawn(dx, dy, dz);
         return new Point(originX, originY, originZ);
     }
 
-    /** Sets {@link #originX}, {@code originY}, {@code originZ} to the origin of a ray leaving in (dx, dy, dz). */
+    /**
+     * Sets {@link #originX}, {@code originY}, {@code originZ} to the origin of a ray leaving in (dx, dy, dz).
+     *
+     * @param dx the ray direction's x component
+     * @param dy the ray direction's y component
+     * @param dz the ray direction's z component
+     */
     public void spawn(double dx, double dy, double dz) {
         double d = Math.abs(nx) * errorX + Math.abs(ny) * errorY + Math.abs(nz) * errorZ;
         if (nx * dx + ny * dy + nz * dz < 0) d = -d;
@@ -102,6 +142,10 @@ public final class SurfacePoint {
      * Sets {@code e1} to {@code d.perpendicular()} and {@code e2} to {@code d.crossProduct(e1)} for the unit
      * direction d = (x, y, z), with exactly the arithmetic of {@link Vector#perpendicular()} and
      * {@link Vector#crossProduct} (Duff et al. 2017; cross products by {@link Util#differenceOfProducts}).
+     *
+     * @param x the unit direction's x component
+     * @param y the unit direction's y component
+     * @param z the unit direction's z component
      */
     public void basis(double x, double y, double z) {
         double sign = Math.copySign(1.0, z);

@@ -54,7 +54,11 @@ public final class TraceContext {
     /** A direction handed back by a helper (refraction), copied by the caller at once. */
     final double[] direction = new double[3];
 
-    /** The last traced colour as a {@link Color} (allocates; the render loop reads the fields). */
+    /**
+     * The last traced colour as a {@link Color} (allocates; the render loop reads the fields).
+     *
+     * @return a new colour of the fields {@code red}, {@code green}, {@code blue}
+     */
     public Color color() {
         return new Color(red, green, blue);
     }
@@ -81,35 +85,64 @@ public final class TraceContext {
         return direct;
     }
 
-    /** Buffer for {@code count} offsets of anti-aliasing samples over a pixel. */
+    /**
+     * Buffer for {@code count} offsets of anti-aliasing samples over a pixel.
+     *
+     * @param count the number of samples
+     * @return a buffer of at least {@code 2 * count} doubles, reused by later calls
+     */
     public double[] pixelOffsets(int count) {
         if (pixelOffsets.length < 2 * count) pixelOffsets = new double[2 * count];
         return pixelOffsets;
     }
 
-    /** Buffer for {@code count} offsets of depth-of-field samples over the lens. */
+    /**
+     * Buffer for {@code count} offsets of depth-of-field samples over the lens.
+     *
+     * @param count the number of samples
+     * @return a buffer of at least {@code 2 * count} doubles, reused by later calls
+     */
     public double[] lensOffsets(int count) {
         if (lensOffsets.length < 2 * count) lensOffsets = new double[2 * count];
         return lensOffsets;
     }
 
-    /** Buffer for {@code count} offsets of shadow rays over a light's disk. */
+    /**
+     * Buffer for {@code count} offsets of shadow rays over a light's disk.
+     *
+     * @param count the number of shadow rays
+     * @return a buffer of at least {@code 2 * count} doubles, reused by later calls
+     */
     public double[] shadowOffsets(int count) {
         if (shadowOffsets.length < 2 * count) shadowOffsets = new double[2 * count];
         return shadowOffsets;
     }
 
-    /** Buffer for {@code count} offsets of a glossy or frosted beam (only the first rough bounce splits). */
+    /**
+     * Buffer for {@code count} offsets of a glossy or frosted beam (only the first rough bounce splits).
+     *
+     * @param count the number of rays of the beam
+     * @return a buffer of at least {@code 2 * count} doubles, reused by later calls
+     */
     public double[] glossyOffsets(int count) {
         if (glossyOffsets.length < 2 * count) glossyOffsets = new double[2 * count];
         return glossyOffsets;
     }
 
-    /** BVH nodes visited and primitives tested, over both records. */
+    /**
+     * BVH nodes visited and primitives tested, over both records.
+     *
+     * @return the number of nodes visited by both records
+     */
     public long nodeVisits() {
         return hit.nodeVisits + shadowHit.nodeVisits;
     }
 
+    /**
+     * Primitives tested, over both records.
+     *
+     * @return the number of primitive tests by both records
+     */
     public long primitiveTests() {
         return hit.primitiveTests + shadowHit.primitiveTests;
     }

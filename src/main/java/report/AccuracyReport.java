@@ -27,14 +27,33 @@ import renderer.RayCounters;
  */
 public final class AccuracyReport {
 
-    /** What to run and where to write it. */
+    /**
+     * What to run and where to write it.
+     *
+     * @param width image width in pixels, at least 8
+     * @param height image height in pixels, at least 8
+     * @param counts the sample counts to measure, at least two
+     * @param repeats timed renders per measurement (the median is kept), at least 1
+     * @param out the folder the report, tables, charts and crops are written to
+     * @param experiments the experiments to run, in order
+     */
     public record Options(int width, int height, int[] counts, int repeats, Path out, List<Experiment> experiments) {
+        /**
+         * The defaults: 160 x 120 pixels, counts 1, 4, 16, 64 and 256, 3 repeats, folder {@code images}, the standard
+         * experiments.
+         *
+         * @return the default options
+         */
         public static Options defaults() {
             return new Options(160, 120, new int[] {1, 4, 16, 64, 256}, 3, Path.of("images"), standardExperiments());
         }
     }
 
-    /** The experiments the report runs by default. */
+    /**
+     * The experiments the report runs by default.
+     *
+     * @return the anti-aliasing, soft shadow, depth of field, glossy and street experiments, in that order
+     */
     public static List<Experiment> standardExperiments() {
         return List.of(
                 new AntiAliasingExperiment(),
@@ -46,6 +65,12 @@ public final class AccuracyReport {
 
     private AccuracyReport() {}
 
+    /**
+     * Runs the report with the options in {@code args} and prints where it was written.
+     *
+     * @param args the options: {@code --size WxH}, {@code --counts n1,n2,...}, {@code --repeats N}, {@code --out
+     *     folder}, {@code --only slug1,slug2}
+     */
     public static void main(String[] args) {
         Options options = parse(args);
         List<Measurement> all = run(options, System.out);
@@ -53,7 +78,15 @@ public final class AccuracyReport {
                 + " measurements)");
     }
 
-    /** Options from command-line arguments; an unknown or malformed option is an IllegalArgumentException. */
+    /**
+     * Options from command-line arguments; an unknown or malformed option is an IllegalArgumentException.
+     *
+     * @param args the options: {@code --size WxH}, {@code --counts n1,n2,...}, {@code --repeats N}, {@code --out
+     *     folder}, {@code --only slug1,slug2}
+     * @return the defaults with the given options replaced
+     * @throws IllegalArgumentException if an option is unknown, lacks its value, or gives a size below 8 x 8, repeats
+     *     below 1 or fewer than two counts
+     */
     public static Options parse(String[] args) {
         Options o = Options.defaults();
         int width = o.width(), height = o.height(), repeats = o.repeats();
@@ -117,7 +150,13 @@ public final class AccuracyReport {
         return value;
     }
 
-    /** Runs every experiment of {@code options}, writes the outputs, returns all measurements. */
+    /**
+     * Runs every experiment of {@code options}, writes the outputs, returns all measurements.
+     *
+     * @param options what to run and where to write it
+     * @param log where progress lines are printed
+     * @return every measurement of every experiment, in the order taken
+     */
     public static List<Measurement> run(Options options, java.io.PrintStream log) {
         Path folder = options.out().resolve("accuracy");
         List<Measurement> all = new ArrayList<>();

@@ -10,7 +10,13 @@ package report;
  */
 public record ConvergenceFit(double slope, double intercept) {
 
-    /** Fits {@code log10 y = intercept + slope log10 x} over the points with positive x and y. */
+    /**
+     * Fits {@code log10 y = intercept + slope log10 x} over the points with positive x and y.
+     *
+     * @param x the abscissas (sample counts or seconds)
+     * @param y the errors, as many as {@code x}
+     * @return the fitted line, with NaN slope and intercept when fewer than two usable points or all x equal
+     */
     public static ConvergenceFit of(double[] x, double[] y) {
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
         int n = 0;
@@ -33,6 +39,8 @@ public record ConvergenceFit(double slope, double intercept) {
     /**
      * How many times more of x (samples or seconds) halve the error: {@code 2^(-1/slope)}; infinite when the
      * error does not fall.
+     *
+     * @return the factor by which x must grow to halve the error, or {@link Double#POSITIVE_INFINITY}
      */
     public double factorToHalveError() {
         return slope < 0 ? Math.pow(2, -1 / slope) : Double.POSITIVE_INFINITY;

@@ -14,7 +14,14 @@ import renderer.ImageWriter;
  */
 public record ImageError(double rmse, double p99) {
 
-    /** The error of {@code image} against {@code reference} (same size). */
+    /**
+     * The error of {@code image} against {@code reference} (same size).
+     *
+     * @param image the image measured
+     * @param reference the converged reference, of the same size
+     * @return the RMSE and 99th-percentile error on the 0..255 scale
+     * @throws IllegalArgumentException if the sizes differ
+     */
     public static ImageError between(ImageWriter image, ImageWriter reference) {
         if (image.getNx() != reference.getNx() || image.getNy() != reference.getNy()) {
             throw new IllegalArgumentException("image " + image.getNx() + " x " + image.getNy() + " and reference "

@@ -24,17 +24,21 @@ import renderer.SurfacePoint;
 public final class AcneProbe {
     /** A convex test shape placed around a centre point, with an oblique orientation. */
     public enum Shape {
+        /** A unit sphere. */
         SPHERE(c -> new Sphere(c, 1)),
+        /** An oblique triangle about 1.8 across. */
         TRIANGLE(c -> new Triangle(
                 c.add(new Vector(-0.9, -0.35, 0.2)),
                 c.add(new Vector(0.8, -0.5, -0.3)),
                 c.add(new Vector(0.1, 0.9, 0.45)))),
+        /** An oblique convex pentagon. */
         POLYGON(c -> new Polygon(
                 onObliquePlane(c, -0.8, -0.6),
                 onObliquePlane(c, 0.7, -0.7),
                 onObliquePlane(c, 0.9, 0.5),
                 onObliquePlane(c, -0.1, 0.95),
                 onObliquePlane(c, -0.7, 0.4))),
+        /** An oblique cylinder of radius 0.6 and height 1.2. */
         CYLINDER(c -> new Cylinder(0.6, new Ray(c.add(new Vector(-0.4, -0.3, -0.5)), new Vector(0.5, 0.4, 1)), 1.2));
 
         private final Function<Point, Geometry> factory;
@@ -43,7 +47,12 @@ public final class AcneProbe {
             this.factory = factory;
         }
 
-        /** The shape around {@code centre}. */
+        /**
+         * The shape around {@code centre}.
+         *
+         * @param centre the point the shape is placed around
+         * @return a new geometry of this shape
+         */
         public Geometry at(Point centre) {
             return factory.apply(centre);
         }
@@ -59,6 +68,11 @@ public final class AcneProbe {
 
     /** Self-hits among the spawned rays. */
     public record Result(long spawned, long selfHits, long primaryMisses, long nonFinite) {
+        /**
+         * The fraction of spawned rays that hit their own surface.
+         *
+         * @return selfHits / spawned, or 0 when no ray was spawned
+         */
         public double rate() {
             return spawned == 0 ? 0 : (double) selfHits / spawned;
         }
@@ -66,13 +80,27 @@ public final class AcneProbe {
 
     private AcneProbe() {}
 
-    /** The centre of a shape placed {@code distance} from the origin along a fixed oblique direction. */
+    /**
+     * The centre of a shape placed {@code distance} from the origin along a fixed oblique direction.
+     *
+     * @param distance the distance from the origin, in scene units
+     * @return the centre point
+     */
     public static Point placement(double distance) {
         Vector direction = new Vector(0.48, 0.64, 0.6).normalize();
         return new Point(distance * direction.x, distance * direction.y, distance * direction.z);
     }
 
-    /** Runs {@code probes} probes on {@code shape} at {@code distance}, searching with the BVH or brute force. */
+    /**
+     * Runs {@code probes} probes on {@code shape} at {@code distance}, searching with the BVH or brute force.
+     *
+     * @param shape the shape probed
+     * @param distance the distance of the shape from the origin, in scene units
+     * @param probes the number of primary rays shot at the shape
+     * @param seed the random seed of the rays
+     * @param useBvh true to search with the BVH, false by brute force
+     * @return the spawned rays, self-hits, missed primaries and non-finite hits
+     */
     public static Result run(Shape shape, double distance, int probes, long seed, boolean useBvh) {
         Point centre = placement(distance);
         Geometry geometry = shape.at(centre);

@@ -18,6 +18,17 @@ public final class FixedOffsetBaseline {
 
     private FixedOffsetBaseline() {}
 
+    /**
+     * Spawns rays outward from a unit sphere by the fixed-offset method and counts self-hits and escapes through a
+     * concentric sphere {@code gap} larger.
+     *
+     * @param distance the distance of the spheres' centre from the origin, in scene units
+     * @param delta the fixed offset along the normal, in scene units
+     * @param gap how much larger the outer sphere's radius is
+     * @param probes the number of primary rays shot at the inner sphere
+     * @param seed the random seed of the rays
+     * @return the spawned rays, self-hits and escapes
+     */
     public static Result run(double distance, double delta, double gap, int probes, long seed) {
         Point c = AcneProbe.placement(distance);
         Sphere inner = new Sphere(c, 1), outer = new Sphere(c, 1 + gap);

@@ -25,6 +25,10 @@ public final class LeakProbe {
      * @param level icosphere subdivision level
      * @param scale radius of the sphere
      * @param offset distance of its centre from the origin (along a fixed oblique direction)
+     * @param raysPerTarget the number of rays aimed at each vertex and edge point
+     * @param seed the random seed of the ray origins
+     * @param useBvh true to search with the BVH, false by brute force
+     * @return the rays traced and the leaks of the watertight and the textbook tests
      */
     public static Result run(int level, double scale, double offset, int raysPerTarget, long seed, boolean useBvh) {
         Point centre = AcneProbe.placement(offset);

@@ -25,6 +25,14 @@ public final class PrecisionProbe {
 
     private PrecisionProbe() {}
 
+    /**
+     * Measures the hit points on a unit sphere placed {@code distance} from the origin.
+     *
+     * @param distance the distance of the sphere's centre from the origin, in scene units
+     * @param probes the number of rays shot at the sphere
+     * @param seed the random seed of the rays
+     * @return the largest and mean error in ulps of the distance, the hits and non-finite hits
+     */
     public static Result sphere(double distance, int probes, long seed) {
         Point c = AcneProbe.placement(distance);
         Sphere sphere = new Sphere(c, 1);
@@ -37,6 +45,14 @@ public final class PrecisionProbe {
         });
     }
 
+    /**
+     * Measures the hit points on the oblique test triangle placed {@code distance} from the origin.
+     *
+     * @param distance the distance of the triangle's centre from the origin, in scene units
+     * @param probes the number of rays shot at the triangle
+     * @param seed the random seed of the rays
+     * @return the largest and mean error in ulps of the distance, the hits and non-finite hits
+     */
     public static Result triangle(double distance, int probes, long seed) {
         Point c = AcneProbe.placement(distance);
         Triangle t = (Triangle) AcneProbe.Shape.TRIANGLE.at(c);

@@ -15,6 +15,11 @@ public final class RobustnessReport {
 
     private RobustnessReport() {}
 
+    /**
+     * Runs every probe and prints the tables to standard output.
+     *
+     * @param args optionally the number of probes per table cell (default 20,000)
+     */
     public static void main(String[] args) {
         int probes = args.length > 0 ? Integer.parseInt(args[0]) : 20_000;
         long seed = 20261122L;

@@ -18,6 +18,11 @@ import renderer.SurfacePoint;
 public final class ThinGapProbe {
     /** Spawned rays that escaped through the gap or hit their own sphere. */
     public record Result(long spawned, long escaped, long selfHits) {
+        /**
+         * The spawned rays that failed.
+         *
+         * @return escapes plus self-hits
+         */
         public long failures() {
             return escaped + selfHits;
         }
@@ -25,6 +30,16 @@ public final class ThinGapProbe {
 
     private ThinGapProbe() {}
 
+    /**
+     * Spawns rays outward from a unit sphere inside a concentric sphere {@code gap} larger and counts the failures.
+     *
+     * @param distance the distance of the spheres' centre from the origin, in scene units
+     * @param gap how much larger the outer sphere's radius is
+     * @param probes the number of primary rays shot at the inner sphere
+     * @param seed the random seed of the rays
+     * @param useBvh true to search with the BVH, false by brute force
+     * @return the spawned rays, escapes and self-hits
+     */
     public static Result run(double distance, double gap, int probes, long seed, boolean useBvh) {
         Point centre = AcneProbe.placement(distance);
         Sphere inner = new Sphere(centre, 1);

@@ -29,7 +29,14 @@ public final class TranslationProbe {
 
     private TranslationProbe() {}
 
-    /** The scene rendered at {@code offset} (added to every coordinate), {@code size} pixels square. */
+    /**
+     * The scene rendered at {@code offset} (added to every coordinate), {@code size} pixels square.
+     *
+     * @param offset the translation scale, added to every coordinate; 0 renders the scene at the origin
+     * @param size the image width and height in pixels
+     * @param useBvh true to search with the BVH, false by brute force
+     * @return the rendered image
+     */
     public static ImageWriter render(double offset, int size, boolean useBvh) {
         Vector o = new Vector(offset == 0 ? 1 : offset, offset == 0 ? 1 : offset * 0.7, offset == 0 ? 1 : offset * 0.4);
         double k = offset == 0 ? 0 : 1;
@@ -66,7 +73,15 @@ public final class TranslationProbe {
         return new Point(x + k * offset.x, y + k * offset.y, z + k * offset.z);
     }
 
-    /** Compares the render at {@code offset} with the one at the origin; a pixel differs by more than 1 of 255. */
+    /**
+     * Compares the render at {@code offset} with the one at the origin; a pixel differs by more than 1 of 255.
+     *
+     * @param reference the render at the origin
+     * @param offset the offset of {@code image}, copied into the result
+     * @param image the render at {@code offset}, of the same size as {@code reference}
+     * @return the fraction of differing pixels, the RMS and largest channel difference (of 255) and the non-finite
+     *     pixels
+     */
     public static Result compare(ImageWriter reference, double offset, ImageWriter image) {
         long differing = 0, nonFinite = 0;
         double sum = 0, max = 0;

@@ -55,16 +55,31 @@ public final class CameraPath {
         return new double[] {v.x(), v.y(), v.z()};
     }
 
+    /**
+     * How the camera moves between keyframes.
+     *
+     * @return the interpolation between keyframes: linear or smooth (Catmull-Rom), never null
+     */
     public Interpolation getInterpolation() {
         return interpolation;
     }
 
-    /** The number of frames: the last keyframe's frame + 1. */
+    /**
+     * The number of frames: the last keyframe's frame + 1.
+     *
+     * @return the number of frames, at least 1
+     */
     public int frameCount() {
         return frames[frames.length - 1] + 1;
     }
 
-    /** The camera of {@code frame}; exactly the keyframe's values on a keyframe. */
+    /**
+     * The camera of {@code frame}; exactly the keyframe's values on a keyframe.
+     *
+     * @param frame the 0-based frame number, from 0 to {@link #frameCount()} - 1
+     * @return the camera location and target at that frame
+     * @throws IllegalArgumentException if {@code frame} is outside the path
+     */
     public Pose pose(int frame) {
         if (frame < 0 || frame >= frameCount()) {
             throw new IllegalArgumentException("frame " + frame + " is not in the path's 0.." + (frameCount() - 1));
@@ -110,6 +125,10 @@ public final class CameraPath {
     /**
      * The scene with its camera moved to {@code pose}: location and {@code lookAt} replaced, everything else
      * (up, view plane, depth of field) kept. Build it with {@link SceneLoader#build} to render the frame.
+     *
+     * @param scene the scene document whose camera is moved; not null
+     * @param pose the camera location and the point it looks at
+     * @return a copy of {@code scene} with the camera moved (a camera is created from the pose if the scene has none)
      */
     public static SceneDocument aim(SceneDocument scene, Pose pose) {
         CameraDocument c = scene.camera();

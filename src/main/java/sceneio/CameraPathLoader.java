@@ -35,6 +35,10 @@ public final class CameraPathLoader {
      * Reads a camera path and checks every pose on the scene's camera.
      *
      * @param scene the scene the path moves through, already loaded without error
+     * @param file the camera path JSON file
+     * @return the checked camera path
+     * @throws SceneFileException if the file cannot be read, is not a valid camera path, or a pose cannot be taken by
+     *     the scene's camera
      */
     public static CameraPath load(Path file, SceneDocument scene) throws SceneFileException {
         String name = file.toString();

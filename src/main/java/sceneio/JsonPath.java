@@ -18,12 +18,22 @@ public final class JsonPath {
         this.segments = segments;
     }
 
-    /** The path of field {@code name} of the object here. */
+    /**
+     * The path of field {@code name} of the object here.
+     *
+     * @param name the field name, any string
+     * @return a new path one field deeper than this one
+     */
     public JsonPath field(String name) {
         return append(name);
     }
 
-    /** The path of element {@code index} of the array here. */
+    /**
+     * The path of element {@code index} of the array here.
+     *
+     * @param index the 0-based array index
+     * @return a new path one array element deeper than this one
+     */
     public JsonPath index(int index) {
         return append(index);
     }
@@ -34,12 +44,20 @@ public final class JsonPath {
         return new JsonPath(List.copyOf(more));
     }
 
-    /** The enclosing value's path, or null at the root. */
+    /**
+     * The enclosing value's path, or null at the root.
+     *
+     * @return the path of the enclosing object or array, or null if this is the root
+     */
     public JsonPath parent() {
         return segments.isEmpty() ? null : new JsonPath(segments.subList(0, segments.size() - 1));
     }
 
-    /** The same place as a JSON Pointer (RFC 6901), e.g. {@code /geometries/2/radius}. */
+    /**
+     * The same place as a JSON Pointer (RFC 6901), e.g. {@code /geometries/2/radius}.
+     *
+     * @return the JSON Pointer, the empty string for the root
+     */
     public String toPointer() {
         StringBuilder s = new StringBuilder();
         for (Object segment : segments) {

@@ -14,6 +14,14 @@ import sceneio.model.SceneDocument;
  * @param warnings what was accepted but ignored (e.g. OBJ statements), one line each
  */
 public record LoadedScene(SceneDocument document, Scene scene, Camera camera, List<String> warnings) {
+    /**
+     * Copies the warnings into an unmodifiable list.
+     *
+     * @param document the file as read
+     * @param scene the scene
+     * @param camera a camera on the scene with the file's render settings
+     * @param warnings what was accepted but ignored, one line each; not null, no null element
+     */
     public LoadedScene {
         warnings = List.copyOf(warnings);
     }

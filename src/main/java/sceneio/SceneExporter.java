@@ -74,7 +74,15 @@ public final class SceneExporter {
         this.prefix = name.endsWith(".json") ? name.substring(0, name.length() - 5) : name;
     }
 
-    /** Writes {@code scene} seen by {@code camera} to {@code jsonFile} and its meshes to {@code models/<name>/mesh-N.obj}. */
+    /**
+     * Writes {@code scene} seen by {@code camera} to {@code jsonFile} and its meshes to {@code models/<name>/mesh-N.obj}.
+     *
+     * @param scene the scene to write; its geometries and lights must be of the library's types
+     * @param camera the camera whose position, view plane, depth of field and render settings are written
+     * @param jsonFile the scene file to write; the meshes go to a {@code models} folder beside it
+     * @return the document written to {@code jsonFile}
+     * @throws IllegalArgumentException if a geometry or light cannot be written in the scene format
+     */
     public static SceneDocument export(Scene scene, Camera camera, Path jsonFile) {
         SceneExporter exporter = new SceneExporter(jsonFile);
         SceneDocument document = exporter.document(scene, camera);

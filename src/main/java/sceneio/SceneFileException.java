@@ -6,10 +6,15 @@ package sceneio;
  * {@code scenes/a.json:12:19: $.geometries[2].radius: sphere radius must be positive and finite, but was -5}.
  */
 public final class SceneFileException extends Exception {
+    /** The scene file as the user named it. */
     private final String file;
+    /** 1-based line, or 0 if unknown. */
     private final int line;
+    /** 1-based column, or 0 if unknown. */
     private final int column;
+    /** Where in the document, or null when not inside a value. */
     private final String jsonPath;
+    /** What is wrong and what is allowed. */
     private final String problem;
 
     /**
@@ -18,6 +23,7 @@ public final class SceneFileException extends Exception {
      * @param column 1-based column, or 0 if unknown
      * @param jsonPath where in the document, e.g. {@code $.camera.up}, or null when not inside a value
      * @param problem what is wrong and what is allowed
+     * @param cause the underlying exception, or null
      */
     public SceneFileException(String file, int line, int column, String jsonPath, String problem, Throwable cause) {
         super(format(file, line, column, jsonPath, problem), cause);
@@ -39,26 +45,47 @@ public final class SceneFileException extends Exception {
         return s.append(problem).toString();
     }
 
+    /**
+     * The scene file as the user named it.
+     *
+     * @return the file name as given, for messages
+     */
     public String getFile() {
         return file;
     }
 
-    /** 1-based line, or 0 if unknown. */
+    /**
+     * 1-based line, or 0 if unknown.
+     *
+     * @return the 1-based line of the problem, or 0 if unknown
+     */
     public int getLine() {
         return line;
     }
 
-    /** 1-based column, or 0 if unknown. */
+    /**
+     * 1-based column, or 0 if unknown.
+     *
+     * @return the 1-based column of the problem, or 0 if unknown
+     */
     public int getColumn() {
         return column;
     }
 
-    /** The JSON path ({@code $.a.b[2]}), or null. */
+    /**
+     * The JSON path ({@code $.a.b[2]}), or null.
+     *
+     * @return the JSON path of the problem, or null when it is not inside a value
+     */
     public String getJsonPath() {
         return jsonPath;
     }
 
-    /** What is wrong and allowed, without the place. */
+    /**
+     * What is wrong and allowed, without the place.
+     *
+     * @return the description of what is wrong and what is allowed
+     */
     public String getProblem() {
         return problem;
     }

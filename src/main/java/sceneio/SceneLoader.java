@@ -33,12 +33,23 @@ public final class SceneLoader {
     /**
      * Reads and builds a scene file; OBJ paths are relative to its folder, and must resolve (links followed) inside
      * its folder tree.
+     *
+     * @param file the JSON scene file
+     * @return the scene, its camera, the document read and the warnings
+     * @throws SceneFileException if the file or a file it references cannot be read or is not a valid scene
      */
     public static LoadedScene load(Path file) throws SceneFileException {
         return load(file, List.of());
     }
 
-    /** {@link #load(Path)}, with files referenced from the scene allowed in {@code allowedFolders} too. */
+    /**
+     * {@link #load(Path)}, with files referenced from the scene allowed in {@code allowedFolders} too.
+     *
+     * @param file the JSON scene file
+     * @param allowedFolders further folders whose files the scene may reference; not null, may be empty
+     * @return the scene, its camera, the document read and the warnings
+     * @throws SceneFileException if the file or a file it references cannot be read or is not a valid scene
+     */
     public static LoadedScene load(Path file, List<Path> allowedFolders) throws SceneFileException {
         String text = text(file);
         SceneDocument document = parse(text, file.toString());
@@ -49,12 +60,25 @@ public final class SceneLoader {
     /**
      * Builds a document read from {@code file} (and perhaps changed since): OBJ paths are relative to the file's
      * folder, and the file is read again only on error, to give the message a line and column.
+     *
+     * @param document the scene document to build
+     * @param file the file the document was read from, for relative paths and messages
+     * @return the scene, its camera, the document and the warnings
+     * @throws SceneFileException if the document is not a valid scene or a referenced file cannot be read
      */
     public static LoadedScene build(SceneDocument document, Path file) throws SceneFileException {
         return build(document, file, List.of());
     }
 
-    /** {@link #build(SceneDocument, Path)}, with referenced files allowed in {@code allowedFolders} too. */
+    /**
+     * {@link #build(SceneDocument, Path)}, with referenced files allowed in {@code allowedFolders} too.
+     *
+     * @param document the scene document to build
+     * @param file the file the document was read from, for relative paths and messages
+     * @param allowedFolders further folders whose files the scene may reference; not null, may be empty
+     * @return the scene, its camera, the document and the warnings
+     * @throws SceneFileException if the document is not a valid scene or a referenced file cannot be read
+     */
     public static LoadedScene build(SceneDocument document, Path file, List<Path> allowedFolders)
             throws SceneFileException {
         Supplier<String> text = () -> {
@@ -68,12 +92,25 @@ public final class SceneLoader {
                 .build(document, sceneName(file.toString()));
     }
 
-    /** Reads a scene file into a document without building it (to change it, or to write it back). */
+    /**
+     * Reads a scene file into a document without building it (to change it, or to write it back).
+     *
+     * @param file the JSON scene file
+     * @return the document as read, with absent fields null
+     * @throws SceneFileException if the file cannot be read or is not valid scene JSON
+     */
     public static SceneDocument read(Path file) throws SceneFileException {
         return parse(text(file), file.toString());
     }
 
-    /** Parses scene JSON; {@code name} names it in messages. */
+    /**
+     * Parses scene JSON; {@code name} names it in messages.
+     *
+     * @param json the scene file's text
+     * @param name the file name shown in messages
+     * @return the document as read, with absent fields null
+     * @throws SceneFileException if the text is not valid scene JSON
+     */
     public static SceneDocument parse(String json, String name) throws SceneFileException {
         String start = json.stripLeading();
         if (!start.isEmpty() && start.charAt(0) != '{' && start.charAt(0) != '/') {
@@ -105,6 +142,9 @@ public final class SceneLoader {
      * @param name the file name for messages (and the scene's default name)
      * @param baseDir the folder that OBJ paths are relative to
      * @param text the document's text, used only to give errors a line and column (may be null)
+     * @param document the scene document to build
+     * @return the scene, its camera, the document and the warnings
+     * @throws SceneFileException if the document is not a valid scene or a referenced file cannot be read
      */
     public static LoadedScene build(SceneDocument document, String name, Path baseDir, String text)
             throws SceneFileException {
@@ -112,7 +152,15 @@ public final class SceneLoader {
                 .build(document, sceneName(name));
     }
 
-    /** Parses and builds scene JSON held in a string; OBJ paths are relative to {@code baseDir}. */
+    /**
+     * Parses and builds scene JSON held in a string; OBJ paths are relative to {@code baseDir}.
+     *
+     * @param json the scene file's text
+     * @param name the file name for messages (and the scene's default name)
+     * @param baseDir the folder that OBJ paths are relative to
+     * @return the scene, its camera, the document read and the warnings
+     * @throws SceneFileException if the JSON is not a valid scene or a referenced file cannot be read
+     */
     public static LoadedScene load(String json, String name, Path baseDir) throws SceneFileException {
         return build(parse(json, name), name, baseDir, json);
     }

@@ -15,7 +15,12 @@ import sceneio.model.SceneDocument;
 public final class SceneWriter {
     private SceneWriter() {}
 
-    /** The document as pretty-printed JSON text. */
+    /**
+     * The document as pretty-printed JSON text.
+     *
+     * @param document the scene document to write
+     * @return the JSON text, ending with a newline
+     */
     public static String toJson(SceneDocument document) {
         try {
             return SceneJson.MAPPER.writeValueAsString(document) + "\n";
@@ -24,7 +29,12 @@ public final class SceneWriter {
         }
     }
 
-    /** Writes the document to {@code file} through a temporary file, so a failure never leaves half a file. */
+    /**
+     * Writes the document to {@code file} through a temporary file, so a failure never leaves half a file.
+     *
+     * @param document the scene document to write
+     * @param file the file to create or replace
+     */
     public static void write(SceneDocument document, Path file) {
         String json = toJson(document);
         AtomicFile.write(file, "scene file", temp -> Files.writeString(temp, json, StandardCharsets.UTF_8));

@@ -12,7 +12,13 @@ package renderer.sampling;
 public final class SuperSamplingBlackboard {
     private SuperSamplingBlackboard() {}
 
-    /** The offsets for {@code config} as a new array of x, y pairs. */
+    /**
+     * The offsets for {@code config} as a new array of x, y pairs.
+     *
+     * @param config the sample count, target shape and pattern
+     * @param random the random stream for JITTERED, RANDOM and HALTON; GRID ignores it
+     * @return a new array of {@code 2 * config.getSampleCount()} offsets, x then y for each sample
+     */
     public static double[] getSampleOffsets(SamplingConfig config, SampleStream random) {
         double[] out = new double[2 * config.getSampleCount()];
         getSampleOffsets(config.getSampleCount(), config.getShape(), config.getPattern(), random, out);
@@ -22,6 +28,13 @@ public final class SuperSamplingBlackboard {
     /**
      * Writes {@code count} x, y pairs into {@code out}. {@code random} feeds JITTERED, RANDOM and the HALTON
      * rotation; GRID ignores it. A single sample is always the centre.
+     *
+     * @param count the number of samples, at least 1
+     * @param shape the square {@code [-1/2, 1/2]^2} or the disk of diameter 1
+     * @param pattern how the samples are placed
+     * @param random the random stream; may be null for GRID
+     * @param out the array receiving x, y pairs in its first {@code 2 * count} elements
+     * @throws IllegalArgumentException if {@code count} is below 1 or {@code out} holds fewer than {@code count} pairs
      */
     public static void getSampleOffsets(
             int count, TargetShape shape, SamplingPattern pattern, SampleStream random, double[] out) {
@@ -67,6 +80,11 @@ public final class SuperSamplingBlackboard {
      * Probe points for adaptive sampling of a disk of diameter 1: the centre and {@code count - 1} points evenly
      * spaced on the rim, rotated by a random angle. A straight edge crossing the disk separates two of them unless
      * it cuts off less than the circular segment between neighbouring rim points.
+     *
+     * @param count the number of probe points, at least 2 (the centre and {@code count - 1} rim points)
+     * @param random the random stream choosing the rotation
+     * @param out the array receiving x, y pairs in its first {@code 2 * count} elements
+     * @throws IllegalArgumentException if {@code count} is below 2
      */
     public static void getProbeOffsets(int count, SampleStream random, double[] out) {
         if (count < 2) throw new IllegalArgumentException("probe count must be >= 2, but was " + count);
@@ -80,7 +98,13 @@ public final class SuperSamplingBlackboard {
         }
     }
 
-    /** Writes one uniformly random point of the disk of diameter 1 at {@code out[at]}, {@code out[at + 1]}. */
+    /**
+     * Writes one uniformly random point of the disk of diameter 1 at {@code out[at]}, {@code out[at + 1]}.
+     *
+     * @param random the random stream supplying two uniform numbers
+     * @param out the array receiving the point
+     * @param at the index of the x coordinate in {@code out}; y goes to {@code at + 1}
+     */
     public static void randomPointInDisk(SampleStream random, double[] out, int at) {
         concentricDisk(random.nextDouble(), random.nextDouble(), out, at);
     }

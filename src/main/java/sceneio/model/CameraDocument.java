@@ -26,7 +26,12 @@ public record CameraDocument(
         Double vpHeight,
         DepthOfFieldDocument depthOfField) {
 
-    /** This camera with another view plane height (used to keep pixels square when the resolution changes). */
+    /**
+     * This camera with another view plane height (used to keep pixels square when the resolution changes).
+     *
+     * @param vpHeight the new view plane height in scene units, or null when absent
+     * @return a copy of this camera document with only the view plane height replaced
+     */
     public CameraDocument withVpHeight(Double vpHeight) {
         return new CameraDocument(location, lookAt, direction, up, vpDistance, vpWidth, vpHeight, depthOfField);
     }

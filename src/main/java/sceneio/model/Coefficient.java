@@ -17,11 +17,22 @@ import java.io.IOException;
 @JsonSerialize(using = Coefficient.Serializer.class)
 @JsonDeserialize(using = Coefficient.Deserializer.class)
 public record Coefficient(double r, double g, double b) {
-    /** The same value in every channel. */
+    /**
+     * The same value in every channel.
+     *
+     * @param value the coefficient of all three channels
+     * @return a uniform coefficient with {@code value} in the red, green and blue channels
+     */
     public static Coefficient of(double value) {
         return new Coefficient(value, value, value);
     }
 
+    /**
+     * Whether the three channels are equal (compared as by {@link Double#compare}), so the coefficient is written as
+     * one number.
+     *
+     * @return true when red, green and blue are the same value
+     */
     public boolean isUniform() {
         return Double.compare(r, g) == 0 && Double.compare(g, b) == 0;
     }

@@ -18,16 +18,35 @@ import java.io.IOException;
 @JsonSerialize(using = MaterialRef.Serializer.class)
 @JsonDeserialize(using = MaterialRef.Deserializer.class)
 public record MaterialRef(String name, MaterialDocument inline) {
+    /**
+     * Checks that exactly one of the two components is set.
+     *
+     * @param name the name of an entry in the scene's {@code materials}, or null for an inline material
+     * @param inline the material written in place, or null for a named material
+     * @throws IllegalArgumentException if both or neither of {@code name} and {@code inline} are null
+     */
     public MaterialRef {
         if ((name == null) == (inline == null)) {
             throw new IllegalArgumentException("a material reference is either a name or a material object");
         }
     }
 
+    /**
+     * A reference to a named entry of the scene's {@code materials}.
+     *
+     * @param name the material's name in {@code materials}; not null
+     * @return a reference by name
+     */
     public static MaterialRef named(String name) {
         return new MaterialRef(name, null);
     }
 
+    /**
+     * A material written in place.
+     *
+     * @param material the material document; not null
+     * @return a reference holding the material itself
+     */
     public static MaterialRef of(MaterialDocument material) {
         return new MaterialRef(null, material);
     }

@@ -42,6 +42,13 @@ public record RenderDocument(
         Integer glossySamples,
         Double lightCutoff) {
 
+    /**
+     * This document with another image size.
+     *
+     * @param width the image width in pixels, or null when absent
+     * @param height the image height in pixels, or null when absent
+     * @return a copy of this document with only width and height replaced
+     */
     public RenderDocument withSize(Integer width, Integer height) {
         return new RenderDocument(
                 width,
@@ -56,6 +63,12 @@ public record RenderDocument(
                 lightCutoff);
     }
 
+    /**
+     * This document with other anti-aliasing settings.
+     *
+     * @param antiAliasing the camera-ray sampling per pixel, or null for the default
+     * @return a copy of this document with only the anti-aliasing replaced
+     */
     public RenderDocument withAntiAliasing(SamplingDocument antiAliasing) {
         return new RenderDocument(
                 width,
@@ -70,6 +83,12 @@ public record RenderDocument(
                 lightCutoff);
     }
 
+    /**
+     * This document with another render thread count.
+     *
+     * @param threads the number of render threads, or null for the available processors
+     * @return a copy of this document with only the thread count replaced
+     */
     public RenderDocument withThreads(Integer threads) {
         return new RenderDocument(
                 width,
@@ -84,6 +103,12 @@ public record RenderDocument(
                 lightCutoff);
     }
 
+    /**
+     * This document with the search method chosen.
+     *
+     * @param bvh true to search with the BVH, false for brute force, null for the default (BVH)
+     * @return a copy of this document with only the BVH choice replaced
+     */
     public RenderDocument withBvh(Boolean bvh) {
         return new RenderDocument(
                 width,
@@ -98,6 +123,12 @@ public record RenderDocument(
                 lightCutoff);
     }
 
+    /**
+     * This document with another light cutoff.
+     *
+     * @param lightCutoff display steps of direct light a camera sample may leave out, 0 to 255, or null for the default
+     * @return a copy of this document with only the light cutoff replaced
+     */
     public RenderDocument withLightCutoff(Double lightCutoff) {
         return new RenderDocument(
                 width,

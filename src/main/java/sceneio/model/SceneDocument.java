@@ -44,13 +44,23 @@ public record SceneDocument(
         List<LightDocument> lights,
         List<GeometryDocument> geometries) {
 
-    /** This document with other render settings (used by command-line overrides). */
+    /**
+     * This document with other render settings (used by command-line overrides).
+     *
+     * @param render the new render settings, or null when absent
+     * @return a copy of this document with only the render settings replaced
+     */
     public SceneDocument withRender(RenderDocument render) {
         return new SceneDocument(
                 version, name, seed, background, ambient, camera, render, materials, lights, geometries);
     }
 
-    /** This document with another camera (used by command-line overrides). */
+    /**
+     * This document with another camera (used by command-line overrides).
+     *
+     * @param camera the new camera, or null when absent
+     * @return a copy of this document with only the camera replaced
+     */
     public SceneDocument withCamera(CameraDocument camera) {
         return new SceneDocument(
                 version, name, seed, background, ambient, camera, render, materials, lights, geometries);
