@@ -1,6 +1,5 @@
 package renderer;
 
-import primitives.Color;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Vector;
@@ -72,8 +71,7 @@ final class PixelSampler {
             return;
         }
         if (antiAliasing.isAdaptive() && adaptiveDepth > 0) {
-            Color c = adaptive(u, v, pixelSeed, ctx);
-            ctx.setColor(c.getR(), c.getG(), c.getB());
+            adaptive(u, v, pixelSeed, ctx);
             return;
         }
         double[] offsets = gridOffsets;
@@ -140,56 +138,73 @@ final class PixelSampler {
 
     /**
      * Adaptive anti-aliasing: colours at the corners of the pixel, subdivided into quadrants where they differ
-     * by more than the threshold, down to a lattice of (2^depth + 1)^2 points that is never exceeded.
+     * by more than the threshold, down to a lattice of (2^depth + 1)^2 points that is never exceeded. The lattice
+     * and the quadrants' averages are the thread's ({@link TraceContext#lattice}), so a pixel allocates nothing;
+     * the mean is left in {@code ctx.red, green, blue}.
      */
-    private Color adaptive(double u, double v, long pixelSeed, TraceContext ctx) {
+    private void adaptive(double u, double v, long pixelSeed, TraceContext ctx) {
         int side = (1 << adaptiveDepth) + 1;
-        Color[] cache = new Color[side * side];
-        Color c = quadrant(0, 0, side - 1, u, v, pixelSeed, cache, side, ctx);
+        TraceContext.Lattice lattice = ctx.lattice(side * side);
+        quadrant(0, 0, side - 1, u, v, pixelSeed, lattice, side, 0, ctx);
         int fired = 0;
-        for (Color cached : cache) if (cached != null) fired++;
+        for (int k = 0, n = side * side; k < n; k++) if (lattice.filled[k]) fired++;
         ctx.counters.samplesSaved += antiAliasing.getSampleCount() - fired;
-        return c;
     }
 
-    private Color quadrant(
-            int i0, int j0, int size, double u, double v, long seed, Color[] cache, int side, TraceContext ctx) {
-        Color c00 = latticeSample(i0, j0, u, v, seed, cache, side, ctx);
-        Color c10 = latticeSample(i0 + size, j0, u, v, seed, cache, side, ctx);
-        Color c01 = latticeSample(i0, j0 + size, u, v, seed, cache, side, ctx);
-        Color c11 = latticeSample(i0 + size, j0 + size, u, v, seed, cache, side, ctx);
-        if (size == 1 || maxDifference(c00, c10, c01, c11) <= antiAliasing.getAdaptiveThreshold()) {
-            ColorAverage a = new ColorAverage();
-            a.add(c00);
-            a.add(c10);
-            a.add(c01);
-            a.add(c11);
-            return a.mean();
+    /** The mean of a quadrant into {@code ctx}; {@code level} picks the average of this depth of the recursion. */
+    private void quadrant(
+            int i0,
+            int j0,
+            int size,
+            double u,
+            double v,
+            long seed,
+            TraceContext.Lattice lattice,
+            int side,
+            int level,
+            TraceContext ctx) {
+        int k00 = latticeSample(i0, j0, u, v, seed, lattice, side, ctx);
+        int k10 = latticeSample(i0 + size, j0, u, v, seed, lattice, side, ctx);
+        int k01 = latticeSample(i0, j0 + size, u, v, seed, lattice, side, ctx);
+        int k11 = latticeSample(i0 + size, j0 + size, u, v, seed, lattice, side, ctx);
+        ColorAverage a = lattice.average(level).reset();
+        if (size == 1 || maxDifference(lattice, k00, k10, k01, k11) <= antiAliasing.getAdaptiveThreshold()) {
+            a.add(lattice.r[k00], lattice.g[k00], lattice.b[k00]);
+            a.add(lattice.r[k10], lattice.g[k10], lattice.b[k10]);
+            a.add(lattice.r[k01], lattice.g[k01], lattice.b[k01]);
+            a.add(lattice.r[k11], lattice.g[k11], lattice.b[k11]);
+            a.meanInto(ctx);
+            return;
         }
         int half = size / 2;
-        ColorAverage a = new ColorAverage();
-        a.add(quadrant(i0, j0, half, u, v, seed, cache, side, ctx));
-        a.add(quadrant(i0 + half, j0, half, u, v, seed, cache, side, ctx));
-        a.add(quadrant(i0, j0 + half, half, u, v, seed, cache, side, ctx));
-        a.add(quadrant(i0 + half, j0 + half, half, u, v, seed, cache, side, ctx));
-        return a.mean();
+        quadrant(i0, j0, half, u, v, seed, lattice, side, level + 1, ctx);
+        a.add(ctx);
+        quadrant(i0 + half, j0, half, u, v, seed, lattice, side, level + 1, ctx);
+        a.add(ctx);
+        quadrant(i0, j0 + half, half, u, v, seed, lattice, side, level + 1, ctx);
+        a.add(ctx);
+        quadrant(i0 + half, j0 + half, half, u, v, seed, lattice, side, level + 1, ctx);
+        a.add(ctx);
+        a.meanInto(ctx);
     }
 
-    private Color latticeSample(
-            int i, int j, double u, double v, long seed, Color[] cache, int side, TraceContext ctx) {
+    /** The lattice point (i, j), sampled on first use; returns its index into the lattice. */
+    private int latticeSample(
+            int i, int j, double u, double v, long seed, TraceContext.Lattice lattice, int side, TraceContext ctx) {
         int index = j * side + i;
-        Color c = cache[index];
-        if (c == null) {
+        if (!lattice.filled[index]) {
             // Lattice points at the centres of a side x side grid of cells, not on the pixel's border: fully
             // refined, the lattice is the GRID pattern of side^2 samples (a box filter over this pixel alone);
             // points on the border would also be samples of the neighbouring pixels and blur the image.
             double du = ((i + 0.5) / side - 0.5) * pixelWidth;
             double dv = ((j + 0.5) / side - 0.5) * pixelHeight;
             sample(u + du, v - dv, SampleStream.mix(seed, ADAPTIVE_PATHS + index), ctx);
-            c = ctx.color();
-            cache[index] = c;
+            lattice.r[index] = ctx.red;
+            lattice.g[index] = ctx.green;
+            lattice.b[index] = ctx.blue;
+            lattice.filled[index] = true;
         }
-        return c;
+        return index;
     }
 
     /** Deepest subdivision whose lattice of (2^d + 1)^2 points fits the sample budget. */
@@ -203,15 +218,18 @@ final class PixelSampler {
         return depth;
     }
 
-    private static double maxDifference(Color... colors) {
+    /** The largest difference of one channel between any two of four lattice points. */
+    private static double maxDifference(TraceContext.Lattice l, int k0, int k1, int k2, int k3) {
         double max = 0;
-        for (int a = 0; a < colors.length; a++) {
-            for (int b = a + 1; b < colors.length; b++) {
-                max = Math.max(max, Math.abs(colors[a].getR() - colors[b].getR()));
-                max = Math.max(max, Math.abs(colors[a].getG() - colors[b].getG()));
-                max = Math.max(max, Math.abs(colors[a].getB() - colors[b].getB()));
-            }
-        }
-        return max;
+        max = Math.max(max, difference(l, k0, k1));
+        max = Math.max(max, difference(l, k0, k2));
+        max = Math.max(max, difference(l, k0, k3));
+        max = Math.max(max, difference(l, k1, k2));
+        max = Math.max(max, difference(l, k1, k3));
+        return Math.max(max, difference(l, k2, k3));
+    }
+
+    private static double difference(TraceContext.Lattice l, int a, int b) {
+        return Math.max(Math.abs(l.r[a] - l.r[b]), Math.max(Math.abs(l.g[a] - l.g[b]), Math.abs(l.b[a] - l.b[b])));
     }
 }

@@ -38,6 +38,35 @@ public final class TraceContext {
     /** Averages of the beams over a pixel and over the lens (each kind nests inside the one before). */
     final ColorAverage pixelAverage = new ColorAverage(), lensAverage = new ColorAverage();
 
+    /** Adaptive anti-aliasing's lattice of one pixel: sampled colours, which points are sampled, averages. */
+    static final class Lattice {
+        double[] r = new double[81], g = new double[81], b = new double[81];
+        boolean[] filled = new boolean[81];
+        /** One average per depth of the quadrant recursion (the lattice has at most 2^10 + 1 points a side). */
+        private final ColorAverage[] averages = new ColorAverage[12];
+
+        ColorAverage average(int level) {
+            ColorAverage a = averages[level];
+            if (a == null) a = averages[level] = new ColorAverage();
+            return a;
+        }
+    }
+
+    private final Lattice lattice = new Lattice();
+
+    /** The thread's lattice, with room for {@code points} points and none of them sampled yet. */
+    Lattice lattice(int points) {
+        if (lattice.filled.length < points) {
+            lattice.r = new double[points];
+            lattice.g = new double[points];
+            lattice.b = new double[points];
+            lattice.filled = new boolean[points];
+        } else {
+            java.util.Arrays.fill(lattice.filled, 0, points, false);
+        }
+        return lattice;
+    }
+
     /** The direct light at the point being shaded (sized for the scene's lights on first use). */
     private DirectLighting direct = new DirectLighting(0);
     /** One shaded point per recursion level (the levels active at once are distinct, see SimpleRayTracer). */

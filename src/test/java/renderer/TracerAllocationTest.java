@@ -11,7 +11,8 @@ import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.PointLight;
 import lighting.SpotLight;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
@@ -33,14 +34,15 @@ class TracerAllocationTest {
     /** Far below the 100 to 400 bytes per ray of the tracer that allocated a ray, points and colours per ray. */
     private static final double MOST_BYTES_PER_RAY = 2;
 
-    @Test
-    void aRenderWithEveryEffectAllocatesNearlyNothingPerRay() {
+    @ParameterizedTest(name = "adaptive anti-aliasing {0}")
+    @ValueSource(booleans = {false, true})
+    void aRenderWithEveryEffectAllocatesNearlyNothingPerRay(boolean adaptive) {
         var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         assumeTrue(threads.isCurrentThreadCpuTimeSupported() && threads.isThreadAllocatedMemorySupported());
         threads.setThreadAllocatedMemoryEnabled(true);
         long[] firstAndLast = new long[2];
         boolean[] onRenderThread = new boolean[1];
-        Camera camera = camera();
+        Camera camera = camera(adaptive);
         camera.setProgressListener((done, total) -> {
             long bytes = threads.getCurrentThreadAllocatedBytes(); // on the render thread
             if (done == 1) firstAndLast[0] = bytes;
@@ -60,7 +62,7 @@ class TracerAllocationTest {
     }
 
     /** Soft and hard shadows, glass, a mirror and a glossy floor, anti-aliasing and depth of field: every path. */
-    private static Camera camera() {
+    private static Camera camera(boolean adaptive) {
         Scene scene = new Scene("every effect").setAmbientLight(new AmbientLight(new Color(20, 20, 25)));
         scene.geometries.add(
                 new Plane(Point.ZERO, Vector.AXIS_Z)
@@ -89,7 +91,10 @@ class TracerAllocationTest {
                 .setVpSize(80, 60)
                 .setResolution(64, 48)
                 .setThreads(1)
-                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.JITTERED))
+                .setSamplingConfig(
+                        adaptive
+                                ? new SamplingConfig(9, TargetShape.RECTANGLE, SamplingPattern.JITTERED).adaptive(2)
+                                : new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.JITTERED))
                 .setDepthOfField(120, 0.5)
                 .setApertureSampling(new SamplingConfig(4, TargetShape.CIRCLE, SamplingPattern.JITTERED))
                 .setRenderSettings(RenderSettings.DEFAULT.withShadowSampling(SamplingPattern.JITTERED, true))
