@@ -1,0 +1,172 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Gathers the primitives of a geometry tree for {@link Accelerator}: triangles of polygons (fans) and meshes into
+ * one coordinate array, other bounded shapes as objects, unbounded ones apart, and the outline edges that lone
+ * triangles and polygons share exactly (made watertight). Per-primitive arrays grow by doubling, since a
+ * million-triangle mesh passes through here.
+ */
+final class PrimitiveCollector {
+    /** Slack on primitive boxes so rounding in the kernels never reports a hit just outside a box. */
+    private static final double BOX_PAD = 1e-14;
+
+    int count;
+    double[] triangles = new double[9 * 64];
+    int[] shared = new int[64];
+    int[] parts = new int[64];
+    // Plain arrays grown by doubling, like the ones above: a million-triangle mesh passes through here.
+    Geometry[] owners = new Geometry[64];
+    Intersectable[] objects = new Intersectable[64];
+    boolean[] mayTransmit = new boolean[64];
+    boolean[] clear = new boolean[64];
+    BoundingBox[] objectBoxes = new BoundingBox[64];
+    final List<Intersectable> unbounded = new ArrayList<>();
+    /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
+    final Map<EdgeKey, List<int[]>> outlineEdges = new HashMap<>();
+
+    void collect(Intersectable g) {
+        if (g instanceof Geometries composite) {
+            for (Intersectable member : composite.getMembers()) collect(member);
+        } else if (g instanceof Polygon polygon) {
+            collectPolygon(polygon);
+        } else if (g instanceof Mesh mesh) {
+            collectMesh(mesh);
+        } else if (g.getBoundingBox() == null) {
+            unbounded.add(g);
+        } else {
+            addObject(g);
+        }
+    }
+
+    private void collectPolygon(Polygon polygon) {
+        int fans = polygon.fanCount();
+        boolean transmit = polygon.getMaterial().isTransparent();
+        for (int i = 0; i < fans; i++) {
+            int k = addTriangle(
+                    polygon.fan, 9 * i, 9 * i + 3, 9 * i + 6, polygon, i, polygon.fanSharedEdges[i], transmit);
+            double[] f = polygon.fan;
+            int o = 9 * i;
+            outline(k, WatertightTriangle.EDGE_12, f, o + 3, o + 6);
+            if (i == 0) outline(k, WatertightTriangle.EDGE_01, f, o, o + 3);
+            if (i == fans - 1) outline(k, WatertightTriangle.EDGE_20, f, o + 6, o);
+        }
+    }
+
+    private void collectMesh(Mesh mesh) {
+        boolean transmit = mesh.getMaterial().isTransparent();
+        int[] idx = mesh.indices;
+        int triangles = mesh.triangleCount();
+        ensureCapacity(count + triangles);
+        for (int i = 0; i < triangles; i++) {
+            if (mesh.isDegenerate(i)) continue; // never hit; keeps zero-area boxes out of the tree
+            addTriangle(
+                    mesh.vertices,
+                    3 * idx[3 * i],
+                    3 * idx[3 * i + 1],
+                    3 * idx[3 * i + 2],
+                    mesh,
+                    i,
+                    WatertightTriangle.ALL_EDGES_SHARED,
+                    transmit);
+        }
+    }
+
+    private int addTriangle(
+            double[] v, int a, int b, int c, Geometry owner, int part, int sharedFlags, boolean transmit) {
+        ensureCapacity(count + 1);
+        int o = 9 * count;
+        System.arraycopy(v, a, triangles, o, 3);
+        System.arraycopy(v, b, triangles, o + 3, 3);
+        System.arraycopy(v, c, triangles, o + 6, 3);
+        shared[count] = sharedFlags;
+        parts[count] = part;
+        owners[count] = owner;
+        mayTransmit[count] = transmit;
+        clear[count] = Accelerator.isClear(owner);
+        return count++;
+    }
+
+    private void addObject(Intersectable g) {
+        ensureCapacity(count + 1);
+        objects[count] = g;
+        objectBoxes[count] = g.getBoundingBox();
+        mayTransmit[count] = Accelerator.mayTransmit(g);
+        clear[count] = Accelerator.isClear(g);
+        count++;
+    }
+
+    /** Makes room for {@code needed} primitives in all per-primitive arrays (a mesh asks once for all). */
+    private void ensureCapacity(int needed) {
+        if (needed <= shared.length) return;
+        int capacity = Math.max(needed, 2 * shared.length);
+        triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
+        shared = java.util.Arrays.copyOf(shared, capacity);
+        parts = java.util.Arrays.copyOf(parts, capacity);
+        owners = java.util.Arrays.copyOf(owners, capacity);
+        objects = java.util.Arrays.copyOf(objects, capacity);
+        mayTransmit = java.util.Arrays.copyOf(mayTransmit, capacity);
+        clear = java.util.Arrays.copyOf(clear, capacity);
+        objectBoxes = java.util.Arrays.copyOf(objectBoxes, capacity);
+    }
+
+    private void outline(int primitive, int edgeFlag, double[] v, int from, int to) {
+        EdgeKey key = EdgeKey.of(v, from, to);
+        outlineEdges.computeIfAbsent(key, e -> new ArrayList<>(2)).add(new int[] {primitive, edgeFlag});
+    }
+
+    /** Outline edges used by two or more triangles or polygons become shared (watertight) edges. */
+    void markSharedOutlineEdges() {
+        for (List<int[]> users : outlineEdges.values()) {
+            if (users.size() < 2) continue;
+            for (int[] use : users) shared[use[0]] |= use[1];
+        }
+    }
+
+    /** Six doubles per primitive, padded slightly outward. */
+    double[] boxes() {
+        double[] boxes = new double[6 * count];
+        for (int k = 0; k < count; k++) {
+            int b = 6 * k;
+            BoundingBox box = objectBoxes[k];
+            if (box == null) {
+                int o = 9 * k;
+                for (int a = 0; a < 3; a++) {
+                    double lo = Math.min(triangles[o + a], Math.min(triangles[o + 3 + a], triangles[o + 6 + a]));
+                    double hi = Math.max(triangles[o + a], Math.max(triangles[o + 3 + a], triangles[o + 6 + a]));
+                    boxes[b + a] = lo;
+                    boxes[b + 3 + a] = hi;
+                }
+            } else {
+                boxes[b] = box.minX;
+                boxes[b + 1] = box.minY;
+                boxes[b + 2] = box.minZ;
+                boxes[b + 3] = box.maxX;
+                boxes[b + 4] = box.maxY;
+                boxes[b + 5] = box.maxZ;
+            }
+            for (int a = 0; a < 3; a++) {
+                double lo = boxes[b + a], hi = boxes[b + 3 + a];
+                double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + Double.MIN_NORMAL;
+                boxes[b + a] = lo - pad;
+                boxes[b + 3 + a] = hi + pad;
+            }
+        }
+        return boxes;
+    }
+
+    /** An undirected edge between two exact points, for finding shared outline edges. */
+    private record EdgeKey(double ax, double ay, double az, double bx, double by, double bz) {
+        static EdgeKey of(double[] v, int from, int to) {
+            // + 0.0 turns -0.0 into 0.0 so the same point always gives the same key.
+            double ax = v[from] + 0.0, ay = v[from + 1] + 0.0, az = v[from + 2] + 0.0;
+            double bx = v[to] + 0.0, by = v[to + 1] + 0.0, bz = v[to + 2] + 0.0;
+            boolean swap = ax > bx || (ax == bx && (ay > by || (ay == by && az > bz)));
+            return swap ? new EdgeKey(bx, by, bz, ax, ay, az) : new EdgeKey(ax, ay, az, bx, by, bz);
+        }
+    }
+}
