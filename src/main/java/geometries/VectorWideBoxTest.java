@@ -39,19 +39,33 @@ final class VectorWideBoxTest extends WideBoxTest {
         }
     }
 
+    /**
+     * Written out in one method, on purpose: no vector crosses a call boundary, so nothing is boxed even where the
+     * JIT declines to inline a helper (it did, "callee uses too much stack", and boxed about 19 bytes per ray).
+     * Max and min are one comparison and one blend each: lanewise MAX has Math.max semantics (NaN wins, -0 below
+     * +0), more instructions on the chain every node visit waits on; here no operand is NaN ({@link
+     * RaySlabs#floatSafe}: finite normal reciprocals and offsets, bounds finite or infinite), and where the two
+     * differ, for zeros of opposite sign, the scalar kernel makes the same choice.
+     */
     @Override
     int test(float[] nodes, int o, RaySlabs r, float tMin, float tMax, float[] entries) {
         if (!r.floatSafe) return testInDouble(nodes, o, r, tMin, tMax, entries);
-        FloatVector near = max(
-                max(
-                        slab(nodes, o + BVH.MIN_X + r.flipX, r.invX, r.nearX),
-                        slab(nodes, o + BVH.MIN_Y + r.flipY, r.invY, r.nearY)),
-                slab(nodes, o + BVH.MIN_Z + r.flipZ, r.invZ, r.nearZ));
-        FloatVector far = min(
-                min(
-                        slab(nodes, o + BVH.MAX_X - r.flipX, r.invX, r.farX),
-                        slab(nodes, o + BVH.MAX_Y - r.flipY, r.invY, r.farY)),
-                slab(nodes, o + BVH.MAX_Z - r.flipZ, r.invZ, r.farZ));
+        FloatVector nx =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MIN_X + r.flipX).fma(r.invX, -r.nearX);
+        FloatVector ny =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MIN_Y + r.flipY).fma(r.invY, -r.nearY);
+        FloatVector nz =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MIN_Z + r.flipZ).fma(r.invZ, -r.nearZ);
+        FloatVector fx =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MAX_X - r.flipX).fma(r.invX, -r.farX);
+        FloatVector fy =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MAX_Y - r.flipY).fma(r.invY, -r.farY);
+        FloatVector fz =
+                FloatVector.fromArray(FLOATS, nodes, o + BVH.MAX_Z - r.flipZ).fma(r.invZ, -r.farZ);
+        FloatVector near = nx.blend(ny, nx.compare(VectorOperators.LT, ny));
+        near = near.blend(nz, near.compare(VectorOperators.LT, nz));
+        FloatVector far = fx.blend(fy, fy.compare(VectorOperators.LT, fx));
+        far = far.blend(fz, fz.compare(VectorOperators.LT, far));
         near = near.abs().fma(NEGATIVE_SLACK, near);
         far = far.abs().fma(POSITIVE_SLACK, far);
         VectorMask<Float> hit = near.compare(VectorOperators.LE, far)
@@ -61,26 +75,6 @@ final class VectorWideBoxTest extends WideBoxTest {
         // VectorMask.toLong is not an intrinsic on JDK 17 (measured 20% slower on the street's shadow rays); a
         // blend and an OR across the lanes are.
         return NO_BITS.blend(LANE_BITS, hit.cast(INTS)).reduceLanes(VectorOperators.OR);
-    }
-
-    /**
-     * The larger of each pair of lanes by one comparison and one blend. Lanewise MAX has Math.max semantics (NaN
-     * wins, -0 below +0), more instructions on the chain every node visit waits on. Here no operand is NaN
-     * ({@link RaySlabs#floatSafe}: finite normal reciprocals and offsets, bounds finite or infinite), and where
-     * the two differ, for zeros of opposite sign, the scalar kernel makes the same choice.
-     */
-    private static FloatVector max(FloatVector a, FloatVector b) {
-        return a.blend(b, a.compare(VectorOperators.LT, b));
-    }
-
-    /** The smaller of each pair of lanes; see {@link #max}. */
-    private static FloatVector min(FloatVector a, FloatVector b) {
-        return a.blend(b, b.compare(VectorOperators.LT, a));
-    }
-
-    /** Distances along the ray to the eight planes {@code nodes[i..i+8)} of one axis. */
-    private static FloatVector slab(float[] nodes, int i, float reciprocal, float offset) {
-        return FloatVector.fromArray(FLOATS, nodes, i).fma(reciprocal, -offset);
     }
 
     @Override
