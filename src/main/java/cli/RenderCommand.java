@@ -7,14 +7,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import primitives.Limits;
 import primitives.Printable;
 import renderer.Camera;
 import sceneio.LoadedScene;
@@ -86,7 +85,9 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        RenderOverrides.checkPositive("--threads", threads);
+        if (threads != null && (threads < 1 || threads > Limits.maxThreads())) {
+            throw new BadInputException("--threads must be in " + Limits.threadRange() + ", but was " + threads);
+        }
         overrides.check();
 
         SceneDocument document = SceneLoader.read(sceneFile);
@@ -97,7 +98,7 @@ public final class RenderCommand implements Callable<Integer> {
             }
         }
         LoadedScene loaded = SceneLoader.build(document, sceneFile, allowedPaths);
-        for (String warning : loaded.warnings()) err.println("warning: " + warning);
+        for (String warning : loaded.warnings()) err.println("warning: " + Printable.message(warning));
 
         Path target = output != null
                 ? OutputFile.check(output, false)
@@ -105,47 +106,31 @@ public final class RenderCommand implements Callable<Integer> {
         boolean existed = Files.exists(target);
 
         Camera camera = loaded.camera();
-        // Ctrl-C or SIGTERM during the render: cancel it and let this thread report it before the JVM exits
-        // (AtomicFile's own hook removes a temporary image if the signal comes while it is being written).
-        CountDownLatch finished = new CountDownLatch(1);
-        Thread cancelOnSignal = new Thread(
-                () -> {
-                    camera.cancel();
-                    try {
-                        finished.await(10, TimeUnit.SECONDS);
-                    } catch (InterruptedException e) {
-                        Thread.currentThread().interrupt();
-                    }
-                },
-                "cancel-render");
-        Runtime.getRuntime().addShutdownHook(cancelOnSignal);
+        String unchanged = existed ? "; " + Printable.message(target.toString()) + " was left unchanged" : "";
+        // Ctrl-C or SIGTERM during the render cancels it; this thread reports it before the JVM exits.
+        CancelOnShutdown guard = new CancelOnShutdown(camera);
         try (RenderProgress listener = RenderProgress.create(quiet ? ProgressMode.NONE : progress, System.err, err)) {
             camera.setProgressListener(listener);
             camera.renderImage();
+            if (guard.signalled()) throw new CancellationException("the JVM is shutting down");
         } catch (CancellationException e) {
-            err.println("render cancelled: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            err.println("render cancelled: no image written" + unchanged);
             err.flush();
-            finished.countDown();
             return ExitCodes.CANCELLED;
         } catch (RuntimeException | Error e) {
-            err.println("render failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            err.println("render failed: no image written" + unchanged);
             throw e;
         } finally {
-            finished.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(cancelOnSignal);
-            } catch (IllegalStateException shuttingDown) {
-                // the JVM is exiting: the hook has run
-            }
+            guard.close();
         }
         try {
             camera.writeToImage(target);
         } catch (RuntimeException e) {
-            err.println("writing failed: no image written" + (existed ? "; " + target + " was left unchanged" : ""));
+            err.println("writing failed: no image written" + unchanged);
             throw e;
         }
         if (!quiet) {
-            out.println("wrote " + target);
+            out.println("wrote " + Printable.message(target.toString()));
             out.print(camera.getLastStatistics().format());
             out.flush();
         }

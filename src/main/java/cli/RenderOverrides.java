@@ -83,20 +83,20 @@ public final class RenderOverrides implements Serializable {
      *     light cutoff is outside [0, 255]
      */
     public void check() throws BadInputException {
-        checkPositive("--samples", samples);
-        if (samples != null && samples > Limits.MAX_SAMPLES) {
-            throw new BadInputException("--samples must be <= " + Limits.MAX_SAMPLES + ", but was " + samples);
-        }
-        checkPositive("--width", width);
-        checkPositive("--height", height);
+        checkRange("--samples", samples, Limits.MAX_SAMPLES);
+        checkRange("--width", width, MAX_SIDE);
+        checkRange("--height", height, MAX_SIDE);
         if (lightCutoff != null && !(lightCutoff >= 0 && lightCutoff <= 255)) {
             throw new BadInputException("--light-cutoff must be in [0, 255] display steps, but was " + lightCutoff);
         }
     }
 
-    static void checkPositive(String option, Integer value) throws BadInputException {
-        if (value != null && value < 1) {
-            throw new BadInputException(option + " must be >= 1, but was " + value);
+    /** Longest image side: an image holds at most 2^28 pixels (the loader checks the product). */
+    static final int MAX_SIDE = 1 << 28;
+
+    static void checkRange(String option, Integer value, int max) throws BadInputException {
+        if (value != null && (value < 1 || value > max)) {
+            throw new BadInputException(option + " must be in [1, " + max + "], but was " + value);
         }
     }
 
@@ -126,8 +126,11 @@ public final class RenderOverrides implements Serializable {
                         r.withSize(width != null ? width : r.width(), height != null ? height : r.height()));
             }
             double aspect = (double) r.width() / r.height();
-            int w = width != null ? width : (int) Math.max(1, Math.round(height * aspect));
-            int h = height != null ? height : (int) Math.max(1, Math.round(width / aspect));
+            // Clamped to int: a side beyond 2^31 is reported by the loader as an image too large, not wrapped.
+            int w = width != null ? width : (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(height * aspect)));
+            int h = height != null
+                    ? height
+                    : (int) Math.min(Integer.MAX_VALUE, Math.max(1, Math.round(width / aspect)));
             r = r.withSize(w, h);
             // Both given with another aspect ratio: keep the view plane width and square pixels.
             if (width != null && height != null && camera != null && camera.vpWidth() != null) {

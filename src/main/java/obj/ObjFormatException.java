@@ -1,9 +1,11 @@
 package obj;
 
+import primitives.Printable;
+
 /**
  * A Wavefront OBJ file that cannot be read: it names the file, the line (1-based; 0 when the problem is not on
  * one line, such as a missing file or a file without faces) and the reason. The only exception {@link ObjReader}
- * throws.
+ * throws. Control characters in the message (from a file name or a quoted token) are escaped ({@link Printable}).
  */
 public final class ObjFormatException extends Exception {
     /** The file as the caller named it. */
@@ -33,10 +35,10 @@ public final class ObjFormatException extends Exception {
      * @param cause the underlying exception, or null
      */
     public ObjFormatException(String file, int line, String reason, Throwable cause) {
-        super(file + (line > 0 ? ":" + line : "") + ": " + reason, cause);
-        this.file = file;
+        super(Printable.message(file) + (line > 0 ? ":" + line : "") + ": " + Printable.message(reason), cause);
+        this.file = Printable.message(file);
         this.line = line;
-        this.reason = reason;
+        this.reason = Printable.message(reason);
     }
 
     /**

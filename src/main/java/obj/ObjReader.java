@@ -15,7 +15,11 @@ import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.function.LongSupplier;
+import primitives.Limits;
+import renderer.RenderMemory;
 
 /**
  * Reads the geometry of a Wavefront OBJ file: {@code v} (vertices), {@code vn} (normals) and {@code f} (faces,
@@ -53,8 +57,10 @@ public final class ObjReader {
     private int textureCoordinates;
     private int lineNumber;
 
-    private ObjReader(String file) {
-        this.file = file;
+    private ObjReader(String file, LongSupplier heap) {
+        this.file = primitives.Printable.message(file); // it names the file in warnings and errors
+        this.heap = heap;
+        this.memoryBudget = heap.getAsLong();
     }
 
     /**
@@ -100,7 +106,12 @@ public final class ObjReader {
      * @throws ObjFormatException if the text cannot be read, is malformed, too long or has no faces
      */
     public static ObjMesh read(String name, Reader text) throws ObjFormatException {
-        ObjReader reader = new ObjReader(name);
+        return read(name, text, RenderMemory::available);
+    }
+
+    /** {@link #read(String, Reader)} against the heap {@code heap} reports (tests give a small one). */
+    static ObjMesh read(String name, Reader text, LongSupplier heap) throws ObjFormatException {
+        ObjReader reader = new ObjReader(name, heap);
         try {
             BufferedReader lines = new BufferedReader(text);
             StringBuilder line = new StringBuilder();
@@ -157,8 +168,27 @@ public final class ObjReader {
     /** Longest OBJ text read (characters, about bytes): 2^31 - 1, the most a Java array can index. */
     public static final long MAX_CHARACTERS = Integer.MAX_VALUE;
 
+    /**
+     * Heap per triangle: the reader's corner lists and the mesh made of them (40 bytes), and the accelerator built
+     * to render it ({@link RenderMemory#BYTES_PER_PRIMITIVE}). Checked while reading, so a mesh too large for the
+     * heap stops with the figures at the line where it outgrew it, not with an out-of-memory crash.
+     */
+    public static final int BYTES_PER_TRIANGLE = 40 + RenderMemory.BYTES_PER_PRIMITIVE;
+    /** Heap per {@code v} or {@code vn} line: the reader's list, the mesh's copies, the vertex-normal pairing. */
+    public static final int BYTES_PER_VERTEX = 100;
+    /** Elements (coordinates and corners) read between two checks of the size against the heap. */
+    private static final int CHECK_EVERY = 1 << 16;
+
     /** Characters read so far. */
     private long characters;
+    /** Reports the heap the JVM can give (garbage counted as used until collected). */
+    private final LongSupplier heap;
+    /** The heap when reading began: what the mesh may need. */
+    private long memoryBudget;
+
+    private boolean budgetConfirmed;
+    /** Elements read when the size is next checked. */
+    private long nextSizeCheck = CHECK_EVERY;
     /**
      * Whether a line starting with an OBJ keyword was read: until then a bad line is reported without quoting it,
      * since the file may be any file of the machine rather than an OBJ file.
@@ -180,6 +210,50 @@ public final class ObjReader {
             case "vn" -> normal(tokens);
             case "f" -> face(tokens);
             default -> skip(keyword);
+        }
+        long elements = (long) vertices.size() + normals.size() + cornerVertices.size();
+        if (elements >= nextSizeCheck) {
+            checkSize();
+            nextSizeCheck = elements + CHECK_EVERY;
+        }
+    }
+
+    /**
+     * Stops a mesh that outgrows what one mesh may hold ({@link Limits#MAX_PRIMITIVES} triangles or vertices) or
+     * what the heap can give for it to be loaded and rendered.
+     */
+    private void checkSize() throws ObjFormatException {
+        long triangles = cornerVertices.size() / 3, points = (vertices.size() + normals.size()) / 3;
+        if (triangles > Limits.MAX_PRIMITIVES || points > Limits.MAX_PRIMITIVES) {
+            throw error(String.format(
+                    Locale.ROOT,
+                    "the mesh has %,d triangles and %,d vertices and normals so far; one mesh may have at most %,d"
+                            + " of each",
+                    triangles,
+                    points,
+                    Limits.MAX_PRIMITIVES));
+        }
+        long bytes = triangles * BYTES_PER_TRIANGLE + points * BYTES_PER_VERTEX;
+        if (bytes > memoryBudget && !budgetConfirmed) {
+            // Garbage counted as used when reading began: collect it once and count what this reader holds.
+            budgetConfirmed = true;
+            System.gc();
+            long held = 8L * (vertices.capacity() + normals.capacity())
+                    + 4L * (cornerVertices.capacity() + cornerNormals.capacity());
+            memoryBudget = Math.max(memoryBudget, heap.getAsLong() + held);
+        }
+        if (bytes > memoryBudget) {
+            throw error(String.format(
+                    Locale.ROOT,
+                    "the mesh needs about %s of memory to load and render by this line (%,d triangles at %d"
+                            + " bytes, %,d vertices and normals at %d bytes), but this JVM could give %s; simplify"
+                            + " the mesh or give Java more memory (-Xmx)",
+                    RenderMemory.bytes(bytes),
+                    triangles,
+                    BYTES_PER_TRIANGLE,
+                    points,
+                    BYTES_PER_VERTEX,
+                    RenderMemory.bytes(memoryBudget)));
         }
     }
 
@@ -346,13 +420,18 @@ public final class ObjReader {
         return primitives.Printable.of(s.length() <= 20 ? s : s.substring(0, 20) + "...");
     }
 
+    /** Twice the capacity, without overflowing (the size checks stop a mesh long before the array limit). */
+    private static int grown(int capacity) {
+        return (int) Math.min(Integer.MAX_VALUE - 8, 2L * capacity);
+    }
+
     /** A growable double array: OBJ files hold millions of values, which boxed lists would triple in size. */
     private static final class DoubleList {
         private double[] data = new double[48];
         private int size;
 
         void add(double value) {
-            if (size == data.length) data = Arrays.copyOf(data, size * 2);
+            if (size == data.length) data = Arrays.copyOf(data, grown(size));
             data[size++] = value;
         }
 
@@ -368,6 +447,10 @@ public final class ObjReader {
             return size;
         }
 
+        int capacity() {
+            return data.length;
+        }
+
         double[] toArray() {
             return Arrays.copyOf(data, size);
         }
@@ -379,7 +462,7 @@ public final class ObjReader {
         private int size;
 
         void add(int value) {
-            if (size == data.length) data = Arrays.copyOf(data, size * 2);
+            if (size == data.length) data = Arrays.copyOf(data, grown(size));
             data[size++] = value;
         }
 
@@ -389,6 +472,10 @@ public final class ObjReader {
 
         int size() {
             return size;
+        }
+
+        int capacity() {
+            return data.length;
         }
 
         int[] toArray() {

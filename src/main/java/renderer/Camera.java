@@ -33,7 +33,8 @@ import scene.Scene;
  * the separate {@code writeToImage} calls), and an interrupted caller keeps its interrupt status.
  */
 public final class Camera implements Cloneable {
-    private static final int TILE = 16;
+    /** Side of the square tiles the render threads take from the queue, in pixels. */
+    static final int TILE = 16;
 
     private Point location;
     private Vector vTo, vUp, vRight;
@@ -87,7 +88,9 @@ public final class Camera implements Cloneable {
     }
 
     /**
-     * Render threads, at least 1.
+     * Render threads, at least 1. A render starts at most {@link primitives.Limits#maxThreads()} of them (4 per
+     * processor, 256 in all) and one per tile: more would only add switching, and the image is the same for any
+     * count.
      *
      * @param threads the number of render threads, at least 1
      * @return this camera
@@ -345,8 +348,11 @@ public final class Camera implements Cloneable {
      * Renders the scene into a new image; statistics are in {@link #getLastStatistics()}.
      *
      * @return this camera
+     * @throws IllegalStateException before any work, if the render would not fit the heap ({@link RenderMemory})
+     * @throws CancellationException if the render was cancelled (see the class description)
      */
     public Camera renderImage() {
+        RenderMemory.check(this, nX, nY);
         ImageWriter target = new ImageWriter("render", nX, nY);
         lastStatistics = render(0, 0, nX, nY, target::writePixel);
         image = target;
@@ -370,6 +376,7 @@ public final class Camera implements Cloneable {
      * @throws IllegalArgumentException if the rectangle is empty or not inside the image
      */
     public ImageRegion renderRegion(int x0, int y0, int width, int height) {
+        RenderMemory.check(this, width, height);
         ImageRegion region = new ImageRegion(x0, y0, width, height, nX, nY);
         lastStatistics = render(x0, y0, width, height, region::writePixel);
         return region;
@@ -404,7 +411,7 @@ public final class Camera implements Cloneable {
         AtomicInteger next = new AtomicInteger();
         AtomicInteger done = new AtomicInteger();
         AtomicReference<Throwable> failure = new AtomicReference<>();
-        int workers = Math.min(threads, total);
+        int workers = RenderMemory.workers(this, width, height);
         List<TraceContext> contexts = new ArrayList<>();
         for (int w = 0; w < workers; w++) contexts.add(new TraceContext());
         Runnable[] jobs = new Runnable[workers];

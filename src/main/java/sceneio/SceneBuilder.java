@@ -12,6 +12,7 @@ import geometries.Triangle;
 import geometries.Tube;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -29,13 +30,14 @@ import obj.ObjMesh;
 import obj.ObjReader;
 import primitives.Color;
 import primitives.Double3;
+import primitives.Limits;
 import primitives.Material;
 import primitives.Point;
-import primitives.Printable;
 import primitives.Ray;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
+import renderer.RenderMemory;
 import renderer.RenderSettings;
 import renderer.sampling.SamplingConfig;
 import renderer.sampling.SamplingPattern;
@@ -76,27 +78,10 @@ import sceneio.model.Vec3;
 final class SceneBuilder {
     /** Largest image (pixels), as in the core's image writer: beyond it the pixel buffer cannot be allocated. */
     private static final long MAX_PIXELS = 1L << 28;
-    /**
-     * Memory an image needs per pixel: three doubles of linear colour while rendering, and four bytes of the PNG
-     * buffer when it is written.
-     */
-    static final int BYTES_PER_PIXEL = 28;
-
-    /** The most threads a scene file or the command line gets: four per core. */
-    static int maxThreads() {
-        return 4 * Runtime.getRuntime().availableProcessors();
-    }
-
-    /** Heap the JVM can still give: its maximum minus what is in use now. */
-    private static long availableHeap() {
-        Runtime rt = Runtime.getRuntime();
-        return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-    }
 
     private final String file;
-    private final Path baseDir;
-    /** Folders (real paths) that referenced files may resolve into: the scene's folder and what the user allowed. */
-    private final List<Path> allowedFolders;
+    /** Where referenced files may be: the scene's folder tree and what the user allowed. */
+    private final FileConfinement confinement;
 
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
@@ -110,21 +95,8 @@ final class SceneBuilder {
      */
     SceneBuilder(String file, Path baseDir, Supplier<String> text, List<Path> alsoAllowed) {
         this.file = file;
-        this.baseDir = baseDir;
         this.text = text;
-        List<Path> allowed = new ArrayList<>();
-        allowed.add(realFolder(baseDir));
-        for (Path folder : alsoAllowed) allowed.add(realFolder(folder));
-        this.allowedFolders = List.copyOf(allowed);
-    }
-
-    /** The folder with links followed, or as given (absolute, normalized) when it does not exist. */
-    private static Path realFolder(Path folder) {
-        try {
-            return folder.toRealPath();
-        } catch (java.io.IOException | SecurityException e) {
-            return folder.toAbsolutePath().normalize();
-        }
+        this.confinement = new FileConfinement(baseDir, alsoAllowed);
     }
 
     LoadedScene build(SceneDocument d, String defaultName) throws SceneFileException {
@@ -224,33 +196,14 @@ final class SceneBuilder {
         if ((long) nX * nY > MAX_PIXELS) {
             throw fail(rp, "image of " + nX + " x " + nY + " pixels is too large (at most 2^28 pixels)");
         }
-        long needed = (long) nX * nY * BYTES_PER_PIXEL, available = availableHeap();
-        if (needed > available) {
-            throw fail(
-                    rp,
-                    String.format(
-                            java.util.Locale.ROOT,
-                            "image of %d x %d pixels needs about %.1f GB of memory (%d bytes per pixel), but this"
-                                    + " JVM can give %.1f GB; render it smaller or in regions, or give Java more"
-                                    + " memory (-Xmx)",
-                            nX,
-                            nY,
-                            needed / 1e9,
-                            BYTES_PER_PIXEL,
-                            available / 1e9));
-        }
         b.setResolution(nX, nY);
         if (r.antiAliasing() != null) b.setSamplingConfig(sampling(rp.field("antiAliasing"), r.antiAliasing()));
         if (r.threads() != null) {
-            int threads = r.threads(), cap = maxThreads();
-            if (threads > cap) {
-                warnings.add(file + ": " + rp.field("threads") + ": " + threads + " threads capped at " + cap + " (4 x "
-                        + Runtime.getRuntime().availableProcessors() + " cores; more only add switching, and the"
-                        + " image is the same for any count)");
-                threads = cap;
+            int threads = r.threads();
+            if (threads < 1 || threads > Limits.maxThreads()) {
+                throw fail(rp.field("threads"), "threads must be in " + Limits.threadRange() + ", but was " + threads);
             }
-            int chosen = threads;
-            core(rp.field("threads"), () -> b.setThreads(chosen));
+            b.setThreads(threads);
         }
         RenderSettings settings = RenderSettings.DEFAULT;
         if (r.bvh() != null) settings = settings.withBvh(r.bvh());
@@ -278,7 +231,13 @@ final class SceneBuilder {
         }
         b.setRenderSettings(settings);
         b.setRayTracer(scene, RayTracerType.SIMPLE);
-        return core(at, b::build);
+        Camera camera = core(at, b::build);
+        // Memory last: it depends on the image, the samples, the threads and the geometry together.
+        core(rp, () -> {
+            RenderMemory.check(camera, nX, nY);
+            return camera;
+        });
+        return camera;
     }
 
     private SamplingConfig sampling(JsonPath at, SamplingDocument s) throws SceneFileException {
@@ -450,22 +409,11 @@ final class SceneBuilder {
     private Mesh mesh(JsonPath at, MeshDocument m) throws SceneFileException {
         JsonPath fileAt = at.field("file");
         String name = required(at, "file", m.file());
-        Path relative;
-        try {
-            relative = Path.of(name);
-        } catch (InvalidPathException e) {
-            throw fail(fileAt, "\"" + name + "\" is not a valid path: " + e.getReason());
-        }
-        if (name.isBlank() || relative.isAbsolute() || relative.getRoot() != null) {
-            throw fail(
-                    fileAt,
-                    "the OBJ file must be a path relative to the scene file's folder, but was \"" + name + "\"");
-        }
-        Path path = baseDir.resolve(relative).normalize();
-        if (!Files.exists(path)) {
+        // Resolved inside the allowed folders before anything is looked at (FileConfinement).
+        Path path = core(fileAt, () -> confinement.resolve("OBJ file", name));
+        if (!Files.exists(path, LinkOption.NOFOLLOW_LINKS)) {
             throw fail(fileAt, "OBJ file \"" + name + "\" not found (looked for " + path + ")");
         }
-        confine(fileAt, "OBJ file", name, path);
         ObjMesh obj;
         try {
             obj = ObjReader.read(path, displayName(name));
@@ -484,32 +432,6 @@ final class SceneBuilder {
         }
         boolean smooth = m.smooth() == null || m.smooth();
         return core(at, () -> new Mesh(v, obj.indices(), smooth ? obj.normals() : null));
-    }
-
-    /**
-     * Refuses a referenced file that resolves, after following links, outside the scene file's folder tree and the
-     * folders the user allowed: a scene file from someone else must not read other files of the machine.
-     */
-    private void confine(JsonPath at, String kind, String name, Path path) throws SceneFileException {
-        Path real;
-        try {
-            real = path.toRealPath();
-        } catch (java.io.IOException | SecurityException e) {
-            throw fail(
-                    at,
-                    kind + " \"" + Printable.of(name) + "\" cannot be resolved: "
-                            + e.getClass().getSimpleName());
-        }
-        for (Path folder : allowedFolders) {
-            if (real.startsWith(folder)) return;
-        }
-        throw fail(
-                at,
-                kind + " \"" + Printable.of(name) + "\" resolves to " + Printable.of(real.toString())
-                        + ", outside the scene file's folder "
-                        + Printable.of(allowedFolders.get(0).toString())
-                        + "; referenced files must lie in that folder tree (the command line's --allow-path DIR, or"
-                        + " SceneLoader's allowed folders, widen it)");
     }
 
     /** An OBJ path as the user sees it: beside the scene file's name (e.g. scenes/models/cube.obj). */

@@ -1,9 +1,12 @@
 package sceneio;
 
+import primitives.Printable;
+
 /**
  * A scene file that cannot be loaded: the only exception the loader throws. It names the file, the place (line
  * and column when known, and the JSON path) and what is wrong and allowed, in a compiler-like message such as
  * {@code scenes/a.json:12:19: $.geometries[2].radius: sphere radius must be positive and finite, but was -5}.
+ * Control characters in any part (a JSON key or name may hold terminal escapes) are escaped ({@link Printable}).
  */
 public final class SceneFileException extends Exception {
     /** The scene file as the user named it. */
@@ -27,22 +30,23 @@ public final class SceneFileException extends Exception {
      */
     public SceneFileException(String file, int line, int column, String jsonPath, String problem, Throwable cause) {
         super(format(file, line, column, jsonPath, problem), cause);
-        this.file = file;
+        this.file = Printable.message(file);
         this.line = line;
         this.column = column;
-        this.jsonPath = jsonPath;
-        this.problem = problem;
+        this.jsonPath = jsonPath == null ? null : Printable.message(jsonPath);
+        this.problem = Printable.message(problem);
     }
 
+    /** The message, with control characters escaped: names and keys come from the file, which may be hostile. */
     private static String format(String file, int line, int column, String jsonPath, String problem) {
-        StringBuilder s = new StringBuilder(file);
+        StringBuilder s = new StringBuilder(Printable.message(file));
         if (line > 0) {
             s.append(':').append(line);
             if (column > 0) s.append(':').append(column);
         }
         s.append(": ");
-        if (jsonPath != null) s.append(jsonPath).append(": ");
-        return s.append(problem).toString();
+        if (jsonPath != null) s.append(Printable.message(jsonPath)).append(": ");
+        return s.append(Printable.message(problem)).toString();
     }
 
     /**

@@ -140,7 +140,10 @@ class RaytracerCliTest {
         Path scene = tinyScene();
         Path png = dir.resolve("out.png");
         assertEquals(ExitCodes.BAD_INPUT, run("render", scene.toString(), "-o", png.toString(), "--threads", "0"));
-        assertTrue(err.toString().contains("--threads must be >= 1, but was 0"), err.toString());
+        assertTrue(
+                err.toString().contains("--threads must be in [1, " + primitives.Limits.maxThreads() + "] ("),
+                err.toString());
+        assertTrue(err.toString().contains("but was 0"), err.toString());
         assertEquals(ExitCodes.BAD_INPUT, run("render", scene.toString(), "-o", png.toString(), "--samples", "-3"));
         assertEquals(
                 ExitCodes.BAD_INPUT,

@@ -139,15 +139,16 @@ class UntrustedSceneTest {
     }
 
     @Test
-    void tooManyThreadsAreCappedWithAWarning() throws IOException {
+    void tooManyThreadsAreRefusedWithTheAllowedRange() throws IOException {
+        int max = Math.min(256, 4 * Runtime.getRuntime().availableProcessors());
+        String range = "must be in [1, " + max + "] (4 per processor x "
+                + Runtime.getRuntime().availableProcessors() + " processors, at most 256), but was 3000";
+        assertBadInput(render(scene("\"width\": 4, \"height\": 4, \"threads\": 3000", "")), "threads " + range);
+        assertBadInput(render(scene("\"width\": 4, \"height\": 4", ""), "--threads", "3000"), "--threads " + range);
+        // The largest allowed count renders.
         Path png = dir.resolve("t.png");
-        Result r = render(scene("\"width\": 4, \"height\": 4, \"threads\": 3000", ""), "-o", png.toString());
-        assertEquals(ExitCodes.OK, r.code(), r.err());
-        assertTrue(
-                r.err()
-                        .contains("3000 threads capped at "
-                                + 4 * Runtime.getRuntime().availableProcessors()),
-                r.err());
+        Result ok = render(scene("\"width\": 4, \"height\": 4, \"threads\": " + max, ""), "-o", png.toString());
+        assertEquals(ExitCodes.OK, ok.code(), ok.err());
     }
 
     @Test
