@@ -89,6 +89,40 @@ class UntrustedSceneTest {
     }
 
     @Test
+    void whetherAFileExistsOutsideCannotBeLearnt() throws IOException {
+        Files.writeString(dir.resolve("exists.obj"), SECRET);
+        Files.createDirectories(dir.resolve("scenes"));
+        Files.createSymbolicLink(dir.resolve("scenes/a.obj"), dir.resolve("exists.obj"));
+        Files.createSymbolicLink(dir.resolve("scenes/b.obj"), dir.resolve("missing.obj"));
+        String[] messages = new String[4];
+        String[] files = {"../exists.obj", "../missing.obj", "a.obj", "b.obj"};
+        for (int i = 0; i < files.length; i++) {
+            Result r = render(
+                    scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"" + files[i] + "\"}"));
+            assertBadInput(r, "leads outside the scene file's folder");
+            messages[i] =
+                    r.err().replace(files[i], "F").replace("exists.obj", "X").replace("missing.obj", "X");
+        }
+        assertEquals(messages[0], messages[1], "the same answer for a file that exists and one that does not");
+        assertEquals(messages[2], messages[3], "the same through links");
+    }
+
+    @Test
+    void warningsFromAFileAreEscaped() throws IOException {
+        Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(
+                dir.resolve("scenes/m\u001b[31m.obj"), "o \u001b[2Jname\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        Path png = dir.resolve("w.png");
+        Result r = render(
+                scene("\"width\": 2, \"height\": 2", "{\"type\": \"mesh\", \"file\": \"m\\u001b[31m.obj\"}"),
+                "-o",
+                png.toString());
+        assertEquals(ExitCodes.OK, r.code(), r.err());
+        assertTrue(r.err().contains("m\\u001b[31m.obj: skipped 1 'o' statement"), r.err());
+        assertTrue(r.err().chars().noneMatch(c -> c < 0x20 && c != '\n'), "control characters: " + r.err());
+    }
+
+    @Test
     void aFileThatIsNotAnObjIsNotQuoted() throws IOException {
         Files.createDirectories(dir.resolve("scenes"));
         Files.writeString(dir.resolve("scenes/secret.obj"), SECRET);
@@ -127,15 +161,35 @@ class UntrustedSceneTest {
     void resourceLimitsAreCheckedBeforeAnyWork() throws IOException {
         assertBadInput(
                 render(scene("\"width\": 2, \"height\": 2, \"maxLevel\": 1000", "")), "maxLevel must be in [1, 256]");
-        // The largest image a scene may ask for needs 7.5 GB; where the heap is smaller it is refused up front (a
-        // JVM with that much heap would render it, which this test does not wait for).
         if (Runtime.getRuntime().maxMemory() < 16384L * 16384 * 28) {
-            assertBadInput(render(scene("\"width\": 16384, \"height\": 16384", "")), "needs about 7.5 GB of memory");
+            // The documented maximum of 2^28 pixels needs 7.5 GB; where the heap is smaller it is refused with what
+            // it needs (a JVM with that much heap would render it, which this test does not wait for).
+            assertBadInput(
+                    render(scene("\"width\": 16384, \"height\": 16384", "")),
+                    "$.render: the render needs about 7.5 GB of memory (the 16384 x 16384 image 7.5 GB at 28 bytes"
+                            + " per pixel");
         }
+        assertBadInput(render(scene("\"width\": 16385, \"height\": 16384", "")), "at most 2^28 pixels");
         Result lights = render("{" + CAMERA + ", \"render\": {\"width\": 2, \"height\": 2}, \"lights\": [{\"type\":"
                 + " \"point\", \"position\": [0, 0, 5], \"color\": [1, 1, 1], \"radius\": 1, \"samples\":"
                 + " 1000000000}]}");
-        assertBadInput(lights, "must be in [1, 1048576]");
+        assertBadInput(lights, "must be in [1, 1048576], but was 1000000000");
+        String tooMany = "must be in [1, 1048576], but was 1048577";
+        assertBadInput(
+                render(scene("\"width\": 2, \"height\": 2, \"antiAliasing\": {\"samples\": 1048577}", "")), tooMany);
+        assertBadInput(render(scene("\"width\": 2, \"height\": 2, \"glossySamples\": 1048577", "")), tooMany);
+        String lens = CAMERA.replace(
+                "}", ", \"depthOfField\": {\"focalDistance\": 10, \"aperture\": 1, \"samples\":" + " 1048577}}");
+        assertBadInput(render("{" + lens + ", \"render\": {\"width\": 2, \"height\": 2}}"), tooMany);
+        assertBadInput(
+                render(scene("\"width\": 2, \"height\": 2", ""), "--samples", "1048577"), "--samples " + tooMany);
+        assertBadInput(
+                render(scene("\"width\": 2, \"height\": 2", ""), "--width", "2000000000"),
+                "--width must be in [1, 268435456], but was 2000000000");
+        assertBadInput(render(scene("\"width\": 2, \"height\": 2", ""), "--height", "0"), "--height must be in [1, ");
+        assertBadInput(
+                render(scene("\"width\": 2, \"height\": 2", ""), "--light-cutoff", "NaN"),
+                "--light-cutoff must be in [0, 255]");
     }
 
     @Test

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -135,5 +136,34 @@ class ObjReaderTest {
     void windowsLineEndingsAndTabsAreFine() throws ObjFormatException {
         ObjMesh mesh = ObjReader.parse("crlf.obj", "v\t0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
         assertEquals(1, mesh.triangleCount());
+    }
+
+    @Test
+    void aMeshTooLargeForTheHeapStopsWithTheFiguresAtItsLine() throws ObjFormatException {
+        // 100,000 triangles need about 20 MB at 200 bytes each: with 5 MB to give, reading stops on the way.
+        String text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n".repeat(100_000);
+        ObjFormatException e = assertThrows(
+                ObjFormatException.class, () -> ObjReader.read("big.obj", new StringReader(text), () -> 5_000_000));
+        assertTrue(e.getLine() > 3 && e.getLine() < 100_003, e.getMessage());
+        assertTrue(
+                e.getReason().startsWith("the mesh needs about ")
+                        && e.getReason().contains(" of memory to load and render by this line (")
+                        && e.getReason()
+                                .contains(" triangles at 200 bytes, 3 vertices and normals at 100 bytes), but"
+                                        + " this JVM could give "),
+                e.getMessage());
+        // With the heap to spare, the same text reads.
+        assertEquals(
+                100_000,
+                ObjReader.read("big.obj", new StringReader(text), () -> 1_000_000_000L)
+                        .triangleCount());
+    }
+
+    @Test
+    void controlCharactersFromTheFileOrItsNameAreEscaped() {
+        ObjFormatException e = assertThrows(
+                ObjFormatException.class, () -> ObjReader.parse("\u001b]0;x.obj", "v 0 0 0\nf 1 1 \u001b[2J\n"));
+        assertTrue(e.getMessage().startsWith("\\u001b]0;x.obj:2: face corner '\\u001b[2J'"), e.getMessage());
+        assertTrue(e.getMessage().chars().noneMatch(c -> c < 0x20), e.getMessage());
     }
 }
