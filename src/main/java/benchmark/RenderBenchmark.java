@@ -137,7 +137,7 @@ public final class RenderBenchmark {
             }
             i++;
         }
-        if (runs < 1) throw new IllegalArgumentException("--runs must be >= 1, but was " + runs);
+        if (runs < 1 || runs > 1000) throw new IllegalArgumentException("--runs must be in [1, 1000], but was " + runs);
         for (int t : threads) {
             if (t < 1 || t > 256) throw new IllegalArgumentException("--threads must be in [1, 256], but was " + t);
         }

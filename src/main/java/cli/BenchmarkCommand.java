@@ -46,7 +46,12 @@ public final class BenchmarkCommand implements Callable<Integer> {
                             "benchmark: unknown benchmark '" + which + "'; allowed: bvh, planning, render, effects");
             }
         } catch (NumberFormatException e) {
-            throw new BadInputException("benchmark " + which + ": " + e.getMessage() + " is not a number");
+            // "For input string: \"many\"": the value alone, as the user wrote it.
+            String message = String.valueOf(e.getMessage());
+            int quote = message.indexOf('"');
+            String value =
+                    quote >= 0 ? message.substring(quote + 1, Math.max(quote + 1, message.lastIndexOf('"'))) : "";
+            throw new BadInputException("benchmark " + which + ": '" + value + "' is not an integer");
         } catch (IllegalArgumentException e) {
             throw new BadInputException("benchmark " + which + ": " + e.getMessage());
         }

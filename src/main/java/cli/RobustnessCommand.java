@@ -16,7 +16,10 @@ public final class RobustnessCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws BadInputException {
-        if (probes < 100) throw new BadInputException("robustness: --probes must be at least 100, but was " + probes);
+        if (probes < RobustnessReport.MIN_PROBES || probes > RobustnessReport.MAX_PROBES) {
+            throw new BadInputException("robustness: --probes must be in [" + RobustnessReport.MIN_PROBES + ", "
+                    + RobustnessReport.MAX_PROBES + "], but was " + probes);
+        }
         RobustnessReport.main(new String[] {String.valueOf(probes)});
         return ExitCodes.OK;
     }

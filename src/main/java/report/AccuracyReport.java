@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import primitives.Limits;
 import renderer.AtomicFile;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -78,14 +79,17 @@ public final class AccuracyReport {
                 + " measurements)");
     }
 
+    /** Largest image side and most repeats the report takes (its references render at far more samples). */
+    static final int MAX_SIDE = 4096, MAX_REPEATS = 1000;
+
     /**
      * Options from command-line arguments; an unknown or malformed option is an IllegalArgumentException.
      *
      * @param args the options: {@code --size WxH}, {@code --counts n1,n2,...}, {@code --repeats N}, {@code --out
      *     folder}, {@code --only slug1,slug2}
      * @return the defaults with the given options replaced
-     * @throws IllegalArgumentException if an option is unknown, lacks its value, or gives a size below 8 x 8, repeats
-     *     below 1 or fewer than two counts
+     * @throws IllegalArgumentException if an option is unknown or lacks its value, or a size is outside 8 x 8 to
+     *     4096 x 4096, repeats outside 1 to 1000, a count outside 1 to 1048576, or fewer than two counts are given
      */
     public static Options parse(String[] args) {
         Options o = Options.defaults();
@@ -97,7 +101,8 @@ public final class AccuracyReport {
             String value = i + 1 < args.length ? args[i + 1] : null;
             switch (args[i]) {
                 case "--size" -> {
-                    String[] wh = require(value, "--size").split("x");
+                    String[] wh = require(value, "--size").split("x", -1);
+                    if (wh.length != 2) throw new IllegalArgumentException("--size must be WxH, e.g. 160x120");
                     width = Integer.parseInt(wh[0]);
                     height = Integer.parseInt(wh[1]);
                     i++;
@@ -125,8 +130,19 @@ public final class AccuracyReport {
                             + "'; allowed: --size WxH, --counts n1,n2,..., --repeats N, --out folder");
             }
         }
-        if (width < 8 || height < 8 || repeats < 1 || counts.length < 2) {
-            throw new IllegalArgumentException("need a size of at least 8x8, repeats >= 1 and two or more counts");
+        if (width < 8 || height < 8 || width > MAX_SIDE || height > MAX_SIDE) {
+            throw new IllegalArgumentException(
+                    "--size must be from 8x8 to " + MAX_SIDE + "x" + MAX_SIDE + ", but was " + width + "x" + height);
+        }
+        if (repeats < 1 || repeats > MAX_REPEATS) {
+            throw new IllegalArgumentException("--repeats must be in [1, " + MAX_REPEATS + "], but was " + repeats);
+        }
+        if (counts.length < 2) throw new IllegalArgumentException("--counts needs two or more sample counts");
+        for (int n : counts) {
+            if (n < 1 || n > Limits.MAX_SAMPLES) {
+                throw new IllegalArgumentException(
+                        "--counts: each must be in [1, " + Limits.MAX_SAMPLES + "], but was " + n);
+            }
         }
         return new Options(width, height, counts, repeats, out, experiments);
     }

@@ -13,6 +13,9 @@ import renderer.ImageWriter;
 public final class RobustnessReport {
     private static final double[] DISTANCES = {1, 1e3, 1e6, 1e9};
 
+    /** Fewest probes that give a rate worth printing, and most (500 times the default, some hours). */
+    public static final int MIN_PROBES = 100, MAX_PROBES = 10_000_000;
+
     private RobustnessReport() {}
 
     /**
@@ -22,6 +25,10 @@ public final class RobustnessReport {
      */
     public static void main(String[] args) {
         int probes = args.length > 0 ? Integer.parseInt(args[0]) : 20_000;
+        if (probes < MIN_PROBES || probes > MAX_PROBES) {
+            throw new IllegalArgumentException(
+                    "probes must be in [" + MIN_PROBES + ", " + MAX_PROBES + "], but was " + probes);
+        }
         long seed = 20261122L;
         long nonFinite = 0, disagreements = 0;
         StringBuilder out = new StringBuilder();

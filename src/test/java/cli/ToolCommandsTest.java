@@ -51,6 +51,34 @@ class ToolCommandsTest {
         assertTrue(err.toString().contains("--probes"), err.toString());
     }
 
+    /** Every numeric argument of the tool commands is bounded: one line and exit 2, never a crash or a runaway. */
+    @Test
+    void everyNumericToolArgumentIsBounded() {
+        String[][] cases = {
+            {"benchmark planning -5", "runs must be in [1, 1000], but was -5"},
+            {"benchmark planning many", "benchmark planning: 'many' is not an integer"},
+            {"benchmark effects 3 0 5", "width and height must be at least 1"},
+            {"benchmark effects 3 100000 100000", "hold at most 2^24 pixels"},
+            {"benchmark bvh runs=0", "runs must be in [1, 1000], but was 0"},
+            {"benchmark bvh threads=0", "threads must be in [1, 256], but was 0"},
+            {"benchmark render --runs 5000", "--runs must be in [1, 1000], but was 5000"},
+            {"benchmark render --threads 0", "--threads must be in [1, 256], but was 0"},
+            {"report --size 8", "--size must be WxH"},
+            {"report --size 100000x100000", "--size must be from 8x8 to 4096x4096"},
+            {"report --counts 0,4", "--counts: each must be in [1, 1048576], but was 0"},
+            {"report --counts 4,2000000", "but was 2000000"},
+            {"report --repeats 0", "--repeats must be in [1, 1000], but was 0"},
+            {"robustness --probes 2000000000", "--probes must be in [100, 10000000], but was 2000000000"},
+        };
+        for (String[] c : cases) {
+            err.getBuffer().setLength(0);
+            assertEquals(ExitCodes.BAD_INPUT, run(c[0].split(" ")), c[0] + ": " + err);
+            assertTrue(err.toString().startsWith("error: "), c[0] + ": " + err);
+            assertTrue(err.toString().contains(c[1]), c[0] + ": " + err);
+            assertEquals(1, err.toString().strip().lines().count(), c[0] + ": " + err);
+        }
+    }
+
     @Test
     void aTinyReportWritesItsCharts(@TempDir Path out) {
         assertEquals(
