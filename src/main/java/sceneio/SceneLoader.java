@@ -11,6 +11,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Supplier;
+import renderer.RenderMemory;
 import sceneio.model.SceneDocument;
 
 /**
@@ -27,6 +28,11 @@ import sceneio.model.SceneDocument;
 public final class SceneLoader {
     /** Largest scene file read: 64 MiB (a scene holds meshes by reference, in OBJ files). */
     public static final int MAX_SCENE_BYTES = 64 << 20;
+    /**
+     * Heap a scene file may take per byte while it is read and built: its text, the document and the core objects
+     * (6 measured on files of spheres and of long vertex lists; the accelerator is counted when the render starts).
+     */
+    public static final int BYTES_PER_SCENE_BYTE = 12;
 
     private SceneLoader() {}
 
@@ -190,6 +196,23 @@ public final class SceneLoader {
                         "is " + size + " bytes; a " + kind + " may have at most " + MAX_SCENE_BYTES
                                 + " bytes (64 MiB: meshes belong in OBJ files)",
                         null);
+            }
+            long needed = size * BYTES_PER_SCENE_BYTE;
+            if (needed > RenderMemory.available()) {
+                System.gc(); // garbage counts as used until collected: confirm before refusing
+                if (needed > RenderMemory.available()) {
+                    throw new SceneFileException(
+                            name,
+                            0,
+                            0,
+                            null,
+                            "is " + size + " bytes; reading it needs up to " + RenderMemory.bytes(needed)
+                                    + " of memory ("
+                                    + BYTES_PER_SCENE_BYTE + " per byte), but this JVM can give "
+                                    + RenderMemory.bytes(RenderMemory.available())
+                                    + "; give Java more memory (-Xmx)",
+                            null);
+                }
             }
             byte[] bytes;
             try (var in = Files.newInputStream(file)) {
