@@ -28,13 +28,19 @@ public final class Limits {
     /**
      * Most render threads on this machine: {@value #THREADS_PER_PROCESSOR} per available processor, at most
      * {@value #MAX_THREADS}. More cannot make a render faster, and the image is the same for any count.
+     *
+     * @return the largest thread count a scene file or the command line may ask for here
      */
     public static int maxThreads() {
         return Math.min(
                 MAX_THREADS, THREADS_PER_PROCESSOR * Runtime.getRuntime().availableProcessors());
     }
 
-    /** The allowed range of thread counts in words, for messages: {@code [1, 8] (4 per processor x 2 processors)}. */
+    /**
+     * The allowed range of thread counts in words, for messages.
+     *
+     * @return e.g. {@code [1, 8] (4 per processor x 2 processors, at most 256)}
+     */
     public static String threadRange() {
         int processors = Runtime.getRuntime().availableProcessors();
         return "[1, " + maxThreads() + "] (" + THREADS_PER_PROCESSOR + " per processor x " + processors

@@ -43,6 +43,9 @@ public final class RenderMemory {
      * Refuses, before any work, a render of a {@code width x height} region of the camera's image that would not
      * fit the heap this JVM can still give.
      *
+     * @param camera the camera to render with (its scene, samples and threads)
+     * @param width the region's width in pixels (the image's for a whole image)
+     * @param height the region's height in pixels
      * @throws IllegalStateException naming what the render needs, part by part, and what the JVM can give
      */
     public static void check(Camera camera, int width, int height) {
@@ -93,7 +96,11 @@ public final class RenderMemory {
                 bytes(available)));
     }
 
-    /** Heap the JVM can still give: its maximum less what is in use (garbage included, until collected). */
+    /**
+     * Heap the JVM can still give: its maximum less what is in use (garbage included, until collected).
+     *
+     * @return bytes
+     */
     public static long available() {
         Runtime rt = Runtime.getRuntime();
         return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
@@ -144,7 +151,12 @@ public final class RenderMemory {
         return count;
     }
 
-    /** Bytes in words: "512 MB", "7.5 GB". */
+    /**
+     * Bytes in words, for messages.
+     *
+     * @param bytes a number of bytes
+     * @return e.g. "512 MB" or "7.5 GB" (decimal units, rounded up to whole megabytes below a gigabyte)
+     */
     public static String bytes(long bytes) {
         return bytes >= 1_000_000_000L
                 ? String.format(Locale.ROOT, "%.1f GB", bytes / 1e9)
