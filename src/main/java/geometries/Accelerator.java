@@ -236,8 +236,7 @@ public final class Accelerator implements Intersectable {
             final RaySlabs slabs = hit.slabs;
             slabs.set(ray);
             final float tMinF = RaySlabs.below(tMin);
-            float tMaxF = RaySlabs.above(tMax);
-            double tMaxOfF = tMax;
+            float tMaxF = RaySlabs.above(tMax); // follows tMax as the closest hit moves it
             long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
@@ -249,6 +248,7 @@ public final class Accelerator implements Intersectable {
                         tests++;
                         if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
                             tMax = hit.t;
+                            tMaxF = RaySlabs.above(tMax);
                             tieLimit = Math.nextUp(tMax);
                             best = info[2 * k];
                             bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
@@ -258,10 +258,6 @@ public final class Accelerator implements Intersectable {
                     // All children's boxes come with this node: test them, go to the nearest, postpone the others.
                     int o = BVH.NODE_STRIDE * link;
                     visits += BVH.WIDTH;
-                    if (tMax != tMaxOfF) {
-                        tMaxF = RaySlabs.above(tMax);
-                        tMaxOfF = tMax;
-                    }
                     int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries);
                     if (mask != 0) {
                         int rest = mask & (mask - 1);

@@ -197,7 +197,8 @@ public final class BVH {
      *     not six values per primitive
      */
     public static BVH build(double[] primitiveBounds, int bins, int maxLeafSize) {
-        return build(primitiveBounds, bins, maxLeafSize, true);
+        // One core gains nothing from the parallel path (the tree is the same either way).
+        return build(primitiveBounds, bins, maxLeafSize, Runtime.getRuntime().availableProcessors() > 1);
     }
 
     /**

@@ -36,7 +36,7 @@ final class BvhBuilder {
     BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel) {
         this(primBounds, identity(primBounds.length / 6), bins, maxLeafSize, primBounds.length / 6);
         int n = index.length;
-        if (parallel && n >= 2 * BVH.PARALLEL_GRAIN && Runtime.getRuntime().availableProcessors() > 1) {
+        if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
             buildInParallel(n);
         } else if (n > 0) {
             build(0, n, 0);

@@ -37,19 +37,15 @@ final class RaySlabs {
     int flipX, flipY, flipZ;
     /** Whether the float test applies to this ray. */
     boolean floatSafe;
-    /** The ray and its {@link BoundingBox#directionSigns}, for the double fallback. */
+    /** The ray, for the double fallback. */
     Ray ray;
-
-    int signs;
 
     /** Sets the constants for {@code ray}; allocation-free, once per query. */
     void set(Ray ray) {
         this.ray = ray;
         double ix = ray.invDx(), iy = ray.invDy(), iz = ray.invDz();
-        // BoundingBox.directionSigns, written out (reciprocals are never NaN, so |x| <= MAX_VALUE is isFinite).
-        int s = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0);
-        boolean finite = Math.max(Math.abs(ix), Math.max(Math.abs(iy), Math.abs(iz))) <= Double.MAX_VALUE;
-        signs = finite ? s | BoundingBox.FINITE_RECIPROCALS : s;
+        int s = BoundingBox.directionSigns(ray);
+        boolean finite = (s & BoundingBox.FINITE_RECIPROCALS) != 0;
         flipX = (s & 1) * BVH.MAX_X;
         flipY = (s >> 1 & 1) * BVH.MAX_X;
         flipZ = (s >> 2 & 1) * BVH.MAX_X;

@@ -144,7 +144,7 @@ public final class ObjReader {
                         reader.sawStatement
                                 ? "line longer than " + MAX_LINE_LENGTH + " characters"
                                 : "line longer than " + MAX_LINE_LENGTH
-                                        + " characters before any OBJ statement: this is" + " not an OBJ file");
+                                        + " characters before any OBJ statement: this is not an OBJ file");
             }
             c = in.read();
         }
@@ -346,7 +346,8 @@ public final class ObjReader {
     }
 
     private void skip(String keyword) throws ObjFormatException {
-        if (!keyword.matches("[A-Za-z_][A-Za-z0-9_]*") || (!sawStatement && !SKIPPED.containsKey(keyword))) {
+        // (parseLine has set sawStatement for every known keyword, so before it an unknown one is no OBJ file.)
+        if (!keyword.matches("[A-Za-z_][A-Za-z0-9_]*") || !sawStatement) {
             throw error(
                     sawStatement
                             ? "'" + abbreviate(keyword) + "' is not an OBJ statement (a line starts with a keyword such"

@@ -2,6 +2,7 @@ package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -55,14 +56,13 @@ class AtomicFileTest {
     @Test
     void aFailedWriteLeavesNothing() throws IOException {
         Path target = folder.resolve("b.png");
-        try {
-            AtomicFile.write(target, "image", temp -> {
-                Files.writeString(temp, "half");
-                throw new IOException("disk full");
-            });
-        } catch (java.io.UncheckedIOException e) {
-            assertTrue(e.getMessage().contains("disk full"), e.getMessage());
-        }
+        java.io.UncheckedIOException e = assertThrows(
+                java.io.UncheckedIOException.class,
+                () -> AtomicFile.write(target, "image", temp -> {
+                    Files.writeString(temp, "half");
+                    throw new IOException("disk full");
+                }));
+        assertTrue(e.getMessage().contains("disk full"), e.getMessage());
         assertEquals(List.of(), list());
     }
 
