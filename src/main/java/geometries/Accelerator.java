@@ -47,6 +47,9 @@ public final class Accelerator implements Intersectable {
 
     private final Intersectable[] unbounded;
     private final boolean[] unboundedMayTransmit, unboundedClear;
+    /** The distinct prototypes of the instances among the primitives, each stored once. */
+    private final Prototype[] prototypes;
+
     private final BVH bvh;
     private final double buildSeconds;
     /** Build phases in seconds: gathering primitives, primitive boxes, the BVH proper, laying out the arrays. */
@@ -86,6 +89,9 @@ public final class Accelerator implements Intersectable {
                 info[2 * k + 1] = OBJECT;
             }
         }
+        java.util.Set<Prototype> placed = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        for (Intersectable object : objects) if (object instanceof Instance instance) placed.add(instance.prototype());
+        prototypes = placed.toArray(new Prototype[0]);
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];
@@ -181,7 +187,8 @@ public final class Accelerator implements Intersectable {
     }
 
     /**
-     * Bytes of the flat primitive arrays plus the BVH.
+     * Bytes of the flat primitive arrays plus the BVH, and those of each prototype placed by an instance (once,
+     * however many instances place it).
      *
      * @return the size in bytes of the search structure's arrays
      */
@@ -190,7 +197,34 @@ public final class Accelerator implements Intersectable {
                 + 4L * (info.length + parts.length)
                 + 8L * (owners.length + objects.length)
                 + 2L * mayTransmit.length;
+        for (Prototype p : prototypes) b += p.bytes();
         return b + (bvh == null ? 0 : bvh.bytes());
+    }
+
+    /**
+     * Primitives stored: the bounded primitives here (an instance counts as one) plus those of every distinct
+     * prototype, once each.
+     *
+     * @return the number of primitives held in memory
+     */
+    public long storedPrimitiveCount() {
+        long n = boundedCount;
+        for (Prototype p : prototypes) n += p.primitiveCount();
+        return n;
+    }
+
+    /**
+     * Primitives the scene shows: as {@link #storedPrimitiveCount()}, but counting a prototype's primitives once per
+     * instance (what copying the geometry would store).
+     *
+     * @return the number of primitives the instances and the rest place in the scene
+     */
+    public long placedPrimitiveCount() {
+        long n = boundedCount;
+        for (Intersectable object : objects) {
+            if (object instanceof Instance instance) n += instance.prototype().primitiveCount() - 1;
+        }
+        return n;
     }
 
     @Override
@@ -207,6 +241,8 @@ public final class Accelerator implements Intersectable {
         int best = Integer.MAX_VALUE;
         // Where the best hit so far is a triangle, its slot: its geometry and part are filled in at the end.
         int bestTriangle = -1;
+        // Where it is another bounded shape, its slot (an instance among them leaves its mark in the record).
+        int bestObject = -1;
         double tieLimit = tMax;
         long tests = 0;
         for (int j = 0; j < unbounded.length; j++) {
@@ -215,6 +251,7 @@ public final class Accelerator implements Intersectable {
                 tMax = hit.t;
                 tieLimit = Math.nextUp(tMax);
                 best = boundedCount + j;
+                bestObject = -1;
             }
         }
         if (bvh == null) {
@@ -225,6 +262,7 @@ public final class Accelerator implements Intersectable {
                     tieLimit = Math.nextUp(tMax);
                     best = info[2 * k];
                     bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
+                    bestObject = info[2 * k + 1] == OBJECT ? k : -1;
                 }
             }
         } else if (boundedCount > 0) {
@@ -252,6 +290,7 @@ public final class Accelerator implements Intersectable {
                             tieLimit = Math.nextUp(tMax);
                             best = info[2 * k];
                             bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
+                            bestObject = info[2 * k + 1] == OBJECT ? k : -1;
                         }
                     }
                 } else {
@@ -310,6 +349,11 @@ public final class Accelerator implements Intersectable {
         if (bestTriangle >= 0) {
             hit.geometry = owners[bestTriangle];
             hit.part = parts[bestTriangle];
+            hit.instance = null;
+        } else if (bestObject >= 0 && !(objects[bestObject] instanceof Instance)) {
+            hit.instance = null; // an instance hit earlier in the search was not the closest
+        } else if (bestObject < 0) {
+            hit.instance = null; // unbounded geometry is never an instance
         }
         hit.primitiveIndex = best;
         return true;
@@ -554,7 +598,15 @@ public final class Accelerator implements Intersectable {
         return kT.d1 == 1 && kT.d2 == 1 && kT.d3 == 1;
     }
 
+    /** Whether any primitive may let light through. */
+    boolean mayTransmit() {
+        for (boolean b : mayTransmit) if (b) return true;
+        for (boolean b : unboundedMayTransmit) if (b) return true;
+        return false;
+    }
+
     static boolean mayTransmit(Intersectable g) {
+        if (g instanceof Instance instance) return instance.mayTransmit();
         // Non-Geometry members (user composites) may contain transparent surfaces: decide per hit.
         return !(g instanceof Geometry geometry) || geometry.getMaterial().isTransparent();
     }

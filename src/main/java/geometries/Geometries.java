@@ -72,6 +72,8 @@ public class Geometries implements Intersectable {
             if (member.intersect(ray, tMin, tMax, hit)) {
                 tMax = hit.t;
                 found = true;
+                // An instance hit earlier is no longer the closest (instances and groups set the mark themselves).
+                if (!(member instanceof Instance || member instanceof Geometries)) hit.instance = null;
             }
         }
         return found;

@@ -2,6 +2,7 @@ package geometries;
 
 import primitives.Double3;
 import primitives.Point;
+import primitives.Ray;
 import primitives.Vector;
 
 /**
@@ -23,6 +24,19 @@ public final class HitRecord {
     public double u, v;
     /** Index of the hit primitive in the compiled scene; orders equal-distance hits deterministically. */
     int primitiveIndex = Integer.MAX_VALUE;
+    /**
+     * The instance that was hit, or null: then {@link #geometry} is the instance's prototype surface and
+     * {@link #complete} carries the surface data into scene coordinates.
+     */
+    public Instance instance;
+    /** For a hit on {@link #instance}: the distance along the ray in the prototype's coordinates. */
+    double instanceT;
+    /** The record of searches inside instances, made on first use (a nested search needs its own stack). */
+    private HitRecord inner;
+    /** In an inner record: the ray in the prototype's coordinates and the local distance per scene distance. */
+    primitives.ReusableRay localRay;
+
+    double localScale;
 
     /** The hit point, refined onto the surface. */
     public double px, py, pz;
@@ -100,7 +114,29 @@ public final class HitRecord {
         u = 0;
         v = 0;
         primitiveIndex = Integer.MAX_VALUE;
+        instance = null;
         return this;
+    }
+
+    /**
+     * Fills the surface data (point, normals, error bound) of the hit a closest-hit query left here, in scene
+     * coordinates: through the instance when one was hit, otherwise by {@link Geometry#completeHit}.
+     *
+     * @param ray the ray of the query
+     */
+    public void complete(Ray ray) {
+        if (instance != null) instance.completeHit(ray, this);
+        else geometry.completeHit(ray, this);
+    }
+
+    /** The record for searches inside an instance's prototype. */
+    HitRecord inner() {
+        HitRecord r = inner;
+        if (r == null) {
+            r = inner = new HitRecord();
+            r.localRay = new primitives.ReusableRay();
+        }
+        return r;
     }
 
     /**

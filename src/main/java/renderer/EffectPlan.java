@@ -2,9 +2,11 @@ package renderer;
 
 import geometries.Geometries;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Intersectable;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import java.util.ArrayList;
 import java.util.List;
 import lighting.LightSource;
@@ -159,9 +161,21 @@ public final class EffectPlan {
         boolean onlyFlat = true;
         int primitives;
 
+        /** Prototypes already surveyed: a thousand instances of one model look at its materials once. */
+        private final java.util.Set<Prototype> surveyed =
+                java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+
         void visit(Intersectable g) {
             if (g instanceof Geometries composite) {
                 for (Intersectable member : composite.getMembers()) visit(member);
+                return;
+            }
+            if (g instanceof Instance instance) {
+                // A placed copy: its surfaces are the prototype's; it may stand anywhere, so it is not flat.
+                onlyFlat = false;
+                primitives++;
+                if (surveyed.add(instance.prototype()))
+                    visit(instance.prototype().geometry());
                 return;
             }
             primitives++;

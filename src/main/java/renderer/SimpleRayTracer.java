@@ -116,7 +116,7 @@ public class SimpleRayTracer extends RayTracerBase {
             ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
             return;
         }
-        hit.geometry.completeHit(ray, hit);
+        hit.complete(ray);
         SurfacePoint sp = ctx.surface(level).set(hit);
         shade(sp, ray.dx(), ray.dy(), ray.dz(), ctx, path, level, kr, kg, kb, maySplit);
     }

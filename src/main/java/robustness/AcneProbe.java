@@ -118,7 +118,7 @@ public final class AcneProbe {
                 misses++;
                 continue;
             }
-            hit.geometry.completeHit(primary, hit);
+            hit.complete(primary);
             if (!finite(hit)) {
                 nonFinite++;
                 continue;

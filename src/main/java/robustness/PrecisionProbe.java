@@ -90,7 +90,7 @@ public final class PrecisionProbe {
             Ray ray = new Ray(eye, aim.subtract(eye));
             hit.reset();
             if (!scene.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) continue;
-            hit.geometry.completeHit(ray, hit);
+            hit.complete(ray);
             if (!AcneProbe.finite(hit)) {
                 nonFinite++;
                 continue;

@@ -55,7 +55,7 @@ public final class ThinGapProbe {
             Ray primary = new Ray(eye, aim.subtract(eye));
             hit.reset();
             if (!innerOnly.intersect(primary, 0, Double.POSITIVE_INFINITY, hit)) continue;
-            hit.geometry.completeHit(primary, hit);
+            hit.complete(primary);
             SurfacePoint sp = new SurfacePoint(hit);
             Vector out = AcneProbe.randomInHemisphere(random, sp.normal());
             spawned++;

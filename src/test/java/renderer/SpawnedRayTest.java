@@ -6,11 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import geometries.Accelerator;
 import geometries.Cylinder;
 import geometries.Geometries;
-import geometries.Geometry;
 import geometries.HitRecord;
+import geometries.Instance;
+import geometries.Intersectable;
 import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.Tube;
@@ -23,6 +25,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Vector;
 
 /**
@@ -56,6 +59,24 @@ class SpawnedRayTest {
         return list;
     }
 
+    /**
+     * The bounded shapes of {@link #shapes} built at the origin and placed at {@code c} as instances, stretched
+     * unevenly and turned: the ray is carried into the prototype's coordinates and the hit back out, and the error
+     * bounds must still cover both trips.
+     */
+    private static List<Object[]> instancedShapes(Point c) {
+        Transform place = Transform.scale(1.3, 0.7, 1.1)
+                .then(Transform.rotate(new Vector(0.2, 1, -0.4), 37))
+                .then(Transform.translate(c.x, c.y, c.z));
+        List<Object[]> list = new ArrayList<>();
+        for (Object[] shape : shapes(Point.ZERO)) {
+            Intersectable g = (Intersectable) shape[0];
+            if (g.getBoundingBox() == null) continue; // planes and tubes cannot be instanced
+            list.add(new Object[] {new Instance(new Prototype(String.valueOf(g), g), place), shape[1]});
+        }
+        return list;
+    }
+
     static Stream<Arguments> distances() {
         return Stream.of(1.0, 1e3, 1e5, 1e7).map(Arguments::of);
     }
@@ -66,8 +87,10 @@ class SpawnedRayTest {
         Point c = new Point(0.6 * distance, -0.7 * distance, 0.38 * distance);
         long seed = 0x5A7E + (long) Math.log10(distance);
         Random random = new Random(seed);
-        for (Object[] shape : shapes(c)) {
-            Geometry g = (Geometry) shape[0];
+        List<Object[]> all = new ArrayList<>(shapes(c));
+        all.addAll(instancedShapes(c));
+        for (Object[] shape : all) {
+            Intersectable g = (Intersectable) shape[0];
             boolean closed = (Boolean) shape[1];
             Accelerator compiled = Accelerator.build(new Geometries(g), true);
             int checked = 0, failures = 0;
@@ -78,7 +101,7 @@ class SpawnedRayTest {
                 Ray probe = new Ray(aim.add(in.scale(-10)), in);
                 HitRecord hit = new HitRecord();
                 if (!compiled.intersect(probe, 0, Double.POSITIVE_INFINITY, hit)) continue;
-                hit.geometry.completeHit(probe, hit);
+                hit.complete(probe);
                 SurfacePoint sp = new SurfacePoint(hit);
                 Vector d = randomUnit(random);
                 double cos = d.dotProduct(hit.normal());
@@ -102,12 +125,12 @@ class SpawnedRayTest {
                     }
                 }
             }
-            assertTrue(checked > 100, g.getClass().getSimpleName() + " probed " + checked);
+            assertTrue(checked > 100, String.valueOf(g) + " probed " + checked);
             assertEquals(
                     0,
                     failures,
-                    g.getClass().getSimpleName() + " at distance " + distance + " (seed " + seed + "): " + failures
-                            + " of " + checked + " spawned rays failed, first " + firstFailure);
+                    String.valueOf(g) + " at distance " + distance + " (seed " + seed + "): " + failures + " of "
+                            + checked + " spawned rays failed, first " + firstFailure);
         }
     }
 
