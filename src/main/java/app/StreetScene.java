@@ -2,9 +2,12 @@ package app;
 
 import geometries.Accelerator;
 import geometries.Cylinder;
+import geometries.Geometries;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import geometries.Sphere;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -19,6 +22,7 @@ import primitives.Double3;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
@@ -187,13 +191,13 @@ public final class StreetScene {
 
     /**
      * Primitives the renderer works with: triangles of meshes and polygon fans counted one by one, plus spheres,
-     * cylinders and planes.
+     * cylinders and planes; an instance's primitives count once per instance.
      *
      * @return the number of primitives
      */
     public int primitiveCount() {
         Accelerator flat = Accelerator.build(scene.geometries, false);
-        return flat.boundedPrimitiveCount() + flat.unboundedPrimitiveCount();
+        return (int) flat.placedPrimitiveCount() + flat.unboundedPrimitiveCount();
     }
 
     // ------------------------------------------------------------------ ground
@@ -381,28 +385,34 @@ public final class StreetScene {
 
     // ------------------------------------------------------------------ lamps, trees, shelter, moon
 
+    /**
+     * The ten lamps are one prototype placed ten times (instancing: the scene stores the post and globe once). The
+     * lamp is modelled standing at the origin of x and y, on the sidewalk.
+     */
     private void addLamps() {
         Material iron = new Material().setKd(0.07).setKa(0.1).setKs(0.6).setShininess(80);
         Material glass = new Material().setKa(0).setKt(GLOBE_KT);
+        // A point that sees the light at elevation e sees the far lower rim of its disk (radius 10) pass above the
+        // neck while 10 / cos e + tan e stays below the gap from the light down to the neck's top (18 here): up to
+        // e = 52 degrees, beyond about 110 from the post. Nearer, the neck hides part of the disk, a faint penumbra
+        // that lies where the post's own shadow does anyway. A globe sitting lower on its neck spreads that
+        // penumbra over the whole street, where adaptive shadows then fire every sample.
+        double neck = GLOBE_CENTRE - GLOBE_RADIUS;
+        Point foot = new Point(0, 0, SIDEWALK_TOP);
+        Sphere globe = new Sphere(new Point(0, 0, GLOBE_CENTRE), GLOBE_RADIUS);
+        globe.setEmission(new Color(140, 118, 80)).setMaterial(glass);
+        Prototype lamp = new Prototype(
+                "street-lamp",
+                new Geometries(
+                        new Cylinder(4.5, new Ray(foot, Vector.AXIS_Z), 14).setMaterial(iron),
+                        new Cylinder(2.2, new Ray(foot, Vector.AXIS_Z), neck - 5 - SIDEWALK_TOP).setMaterial(iron),
+                        new Cylinder(1, new Ray(new Point(0, 0, neck - 5), Vector.AXIS_Z), 5.5).setMaterial(iron),
+                        globe));
         for (int k = 0; k < 5; k++) {
             for (int side = -1; side <= 1; side += 2) {
                 double x = side * 153, y = (side < 0 ? -100 : 180) + 560 * k;
-                Point foot = new Point(x, y, SIDEWALK_TOP);
-                // A point that sees the light at elevation e sees the far lower rim of its disk (radius 10) pass
-                // above the neck while 10 / cos e + tan e stays below the gap from the light down to the neck's top
-                // (18 here): up to e = 52 degrees, beyond about 110 from the post. Nearer, the neck hides part of the
-                // disk, a faint penumbra that lies where the post's own shadow does anyway. A globe sitting lower
-                // on its neck spreads that penumbra over the whole street, where adaptive shadows then fire every
-                // sample.
-                double neck = GLOBE_CENTRE - GLOBE_RADIUS;
-                scene.geometries.add(
-                        new Cylinder(4.5, new Ray(foot, Vector.AXIS_Z), 14).setMaterial(iron),
-                        new Cylinder(2.2, new Ray(foot, Vector.AXIS_Z), neck - 5 - SIDEWALK_TOP).setMaterial(iron),
-                        new Cylinder(1, new Ray(new Point(x, y, neck - 5), Vector.AXIS_Z), 5.5).setMaterial(iron));
-                Sphere globe = new Sphere(new Point(x, y, GLOBE_CENTRE), GLOBE_RADIUS);
-                globe.setEmission(new Color(140, 118, 80)).setMaterial(glass);
-                scene.geometries.add(globe);
-                lampGlobes.add(new Landmark(globe, globe.getCenter()));
+                scene.geometries.add(new Instance(lamp, Transform.translate(x, y, 0)));
+                lampGlobes.add(new Landmark(globe, new Point(x, y, GLOBE_CENTRE)));
                 scene.lights.add(new PointLight(new Color(1080, 790, 490), new Point(x, y, LAMP_HEIGHT))
                         .setKq(1.2e-4)
                         .setRadius(options.lampRadius())

@@ -238,6 +238,7 @@ public final class Accelerator implements Intersectable {
 
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
+        hit.withoutBvh = bvh == null;
         int best = Integer.MAX_VALUE;
         // Where the best hit so far is a triangle, its slot: its geometry and part are filled in at the end.
         int bestTriangle = -1;
@@ -472,6 +473,7 @@ public final class Accelerator implements Intersectable {
      * surfaces do not block but are collected in the scratch record.
      */
     private boolean anyHit(Ray ray, double tMin, double tMax, HitRecord scratch, boolean honourTransparency) {
+        scratch.withoutBvh = bvh == null;
         scratch.occluder = -1;
         if (blockedByHint(ray, tMin, tMax, scratch)) return true;
         long tests = 0;

@@ -37,6 +37,8 @@ public final class HitRecord {
     primitives.ReusableRay localRay;
 
     double localScale;
+    /** Whether the current query searches without BVHs (then instances search their prototypes without theirs). */
+    boolean withoutBvh;
 
     /** The hit point, refined onto the surface. */
     public double px, py, pz;

@@ -82,14 +82,15 @@ public final class Instance implements Intersectable {
         ReusableRay local = inner.localRay;
         inner.reset();
         double localMax = tMax * scale - shift;
-        boolean found = prototype.accelerator.intersect(local, Math.max(0, tMin * scale - shift), localMax, inner);
+        Accelerator search = prototype.search(hit.withoutBvh);
+        boolean found = search.intersect(local, Math.max(0, tMin * scale - shift), localMax, inner);
         double t = found ? (inner.t + shift) / scale : 0;
         // Rounding may map a surface at tMin (the one a walk through transparent surfaces just crossed) to just
         // inside the local interval: look on, strictly beyond it.
         while (found && t <= tMin) {
             double from = inner.t;
             inner.reset();
-            found = prototype.accelerator.intersect(local, from, localMax, inner);
+            found = search.intersect(local, from, localMax, inner);
             t = found ? (inner.t + shift) / scale : 0;
         }
         hit.nodeVisits += inner.nodeVisits;
@@ -113,8 +114,9 @@ public final class Instance implements Intersectable {
         double scale = inner.localScale;
         ReusableRay local = inner.localRay;
         inner.occluderHint = -1;
-        boolean blocked =
-                prototype.accelerator.occludes(local, Math.max(0, tMin * scale - shift), tMax * scale - shift, inner);
+        boolean blocked = prototype
+                .search(scratch.withoutBvh)
+                .occludes(local, Math.max(0, tMin * scale - shift), tMax * scale - shift, inner);
         scratch.nodeVisits += inner.nodeVisits;
         scratch.primitiveTests += inner.primitiveTests;
         inner.nodeVisits = inner.primitiveTests = 0;

@@ -12,13 +12,16 @@ import primitives.Util;
  *
  * <p>The geometry must be bounded (no planes or tubes: an instance needs a box for the scene's BVH) and must not
  * itself hold instances (one level of instancing: place the inner prototype's instances in the scene instead).
- * The prototype's BVH is always built, whatever a render's BVH setting: it is part of the model, like a mesh's
- * vertex array, and its answers are the same as a brute-force search bit for bit.
+ * The prototype's BVH is built at once; a render with the BVH off searches the prototype without it too (a second,
+ * flat copy made on first use), and both answer the same bit for bit.
  */
 public final class Prototype {
     private final String name;
     private final Intersectable geometry;
     final Accelerator accelerator;
+    /** The same geometry searched without a BVH, for renders with the BVH off; made on first use. */
+    private volatile Accelerator bruteForce;
+
     final BoundingBox bounds;
     /** Whether any surface of the prototype may let light through (shadow rays then look past it). */
     final boolean mayTransmit;
@@ -53,6 +56,19 @@ public final class Prototype {
                     + " only bounded geometry can be instanced");
         }
         mayTransmit = accelerator.mayTransmit();
+    }
+
+    /** The search structure for a query of a scene searched with or without BVHs. */
+    Accelerator search(boolean withoutBvh) {
+        if (!withoutBvh) return accelerator;
+        Accelerator flat = bruteForce;
+        if (flat == null) {
+            synchronized (this) {
+                flat = bruteForce;
+                if (flat == null) bruteForce = flat = Accelerator.build(geometry, false);
+            }
+        }
+        return flat;
     }
 
     private static void rejectNestedInstances(String name, Intersectable geometry) {

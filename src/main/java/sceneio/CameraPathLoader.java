@@ -119,6 +119,7 @@ public final class CameraPathLoader {
                 scene.render(),
                 null,
                 null,
+                null,
                 null);
         int key = 0;
         for (int frame = 0; frame < path.frameCount(); frame++) {

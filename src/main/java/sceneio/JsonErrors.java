@@ -28,7 +28,7 @@ import sceneio.model.LightDocument;
 final class JsonErrors {
     private static final Map<Class<?>, String> TYPE_KINDS = Map.of(
             GeometryDocument.class,
-            "geometry type (sphere, plane, triangle, polygon, tube, cylinder, mesh, group)",
+            "geometry type (sphere, plane, triangle, polygon, tube, cylinder, mesh, group, instance)",
             LightDocument.class,
             "light type (point, spot, directional)");
 

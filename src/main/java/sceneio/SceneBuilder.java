@@ -3,10 +3,12 @@ package sceneio;
 import geometries.Cylinder;
 import geometries.Geometries;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Intersectable;
 import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.Tube;
@@ -34,6 +36,7 @@ import primitives.Limits;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
@@ -52,6 +55,7 @@ import sceneio.model.DepthOfFieldDocument;
 import sceneio.model.DirectionalLightDocument;
 import sceneio.model.GeometryDocument;
 import sceneio.model.GroupDocument;
+import sceneio.model.InstanceDocument;
 import sceneio.model.LightDocument;
 import sceneio.model.MaterialDocument;
 import sceneio.model.MaterialRef;
@@ -85,6 +89,10 @@ final class SceneBuilder {
 
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
+    /** The scene's prototypes by name, in file order, and the names an instance placed. */
+    private final Map<String, Prototype> prototypes = new java.util.LinkedHashMap<>();
+
+    private final java.util.Set<String> placed = new java.util.HashSet<>();
     private final Map<String, Material> materials = new HashMap<>();
 
     /**
@@ -122,9 +130,21 @@ final class SceneBuilder {
                 scene.lights.add(light(root.field("lights").index(i), d.lights().get(i)));
             }
         }
+        if (d.prototypes() != null) {
+            for (Map.Entry<String, GeometryDocument> e : d.prototypes().entrySet()) {
+                JsonPath at = root.field("prototypes").field(e.getKey());
+                if (e.getKey().isBlank()) throw fail(at, "a prototype name must not be empty");
+                Intersectable geometry = geometry(at, e.getValue());
+                prototypes.put(e.getKey(), core(at, () -> new Prototype(e.getKey(), geometry)));
+            }
+        }
         if (d.geometries() != null) {
             Geometries all = group(root.field("geometries"), d.geometries());
             scene.setGeometries(all);
+        }
+        for (String prototype : prototypes.keySet()) {
+            if (!placed.contains(prototype))
+                warnings.add("prototype \"" + prototype + "\" is defined but never placed");
         }
         Camera camera = camera(d, scene);
         return new LoadedScene(d, scene, camera, warnings);
@@ -342,11 +362,26 @@ final class SceneBuilder {
         if (g instanceof GroupDocument group) {
             return group(at.field("geometries"), required(at, "geometries", group.geometries()));
         }
+        if (g instanceof InstanceDocument instance) return instance(at, instance);
         Geometry geometry = core(at, () -> shape(at, g));
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
         return geometry;
+    }
+
+    private Instance instance(JsonPath at, InstanceDocument d) throws SceneFileException {
+        String name = required(at, "of", d.of());
+        Prototype prototype = prototypes.get(name);
+        if (prototype == null) {
+            throw fail(
+                    at.field("of"),
+                    "unknown prototype \"" + name + "\"; defined in \"prototypes\": "
+                            + (prototypes.isEmpty() ? "none" : String.join(", ", new TreeSet<>(prototypes.keySet()))));
+        }
+        placed.add(name);
+        Transform transform = InstanceTransforms.read(at, d, this::fail);
+        return new Instance(prototype, transform);
     }
 
     private Material material(JsonPath at, MaterialRef ref) throws SceneFileException {

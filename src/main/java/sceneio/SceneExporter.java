@@ -3,10 +3,12 @@ package sceneio;
 import geometries.Cylinder;
 import geometries.Geometries;
 import geometries.Geometry;
+import geometries.Instance;
 import geometries.Intersectable;
 import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.Tube;
@@ -66,6 +68,9 @@ public final class SceneExporter {
     private final Map<Material, String> materialNames = new IdentityHashMap<>();
     private final Map<String, MaterialDocument> materials = new LinkedHashMap<>();
     private final Map<Material, Integer> uses = new IdentityHashMap<>();
+    private final Map<Prototype, String> prototypeNames = new IdentityHashMap<>();
+    private final Map<String, GeometryDocument> prototypes = new LinkedHashMap<>();
+    private final java.util.Set<Prototype> counted = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
     private int meshes;
 
     private SceneExporter(Path jsonFile) {
@@ -105,13 +110,32 @@ public final class SceneExporter {
                 camera(camera),
                 render(camera),
                 materials.isEmpty() ? null : materials,
+                prototypes.isEmpty() ? null : prototypes,
                 lights,
                 geometries);
+    }
+
+    /**
+     * The name of a prototype in the file, written to {@code prototypes} the first time an instance places it (its
+     * own name, suffixed when two prototypes share one).
+     */
+    private String prototypeName(Prototype prototype) {
+        String known = prototypeNames.get(prototype);
+        if (known != null) return known;
+        String name = prototype.name();
+        for (int k = 2; prototypes.containsKey(name); k++) name = prototype.name() + "-" + k;
+        prototypeNames.put(prototype, name);
+        prototypes.put(name, null); // reserve the name (and the order) before the members are written
+        prototypes.put(name, geometry(prototype.geometry()));
+        return name;
     }
 
     private void countUses(Intersectable g) {
         if (g instanceof Geometries group) {
             for (Intersectable member : group.getMembers()) countUses(member);
+        } else if (g instanceof Instance instance) {
+            if (counted.add(instance.prototype()))
+                countUses(instance.prototype().geometry());
         } else if (g instanceof Geometry geometry) {
             uses.merge(geometry.getMaterial(), 1, Integer::sum);
         }
@@ -123,6 +147,8 @@ public final class SceneExporter {
             for (Intersectable member : group.getMembers()) members.add(geometry(member));
             return new GroupDocument(members);
         }
+        if (g instanceof Instance instance)
+            return InstanceTransforms.write(prototypeName(instance.prototype()), instance.transform());
         if (!(g instanceof Geometry geometry)) {
             throw new IllegalArgumentException("a " + g.getClass().getName()
                     + " cannot be written to a scene file: only the library's geometries can");

@@ -53,9 +53,10 @@ final class EdgeProbe {
             signature.add("background");
             return;
         }
-        hit.geometry.completeHit(ray, hit);
+        hit.complete(ray);
         SurfacePoint sp = new SurfacePoint(hit);
-        signature.add(System.identityHashCode(sp.geometry) + "/" + hit.part);
+        signature.add(
+                System.identityHashCode(sp.geometry) + "/" + System.identityHashCode(hit.instance) + "/" + hit.part);
         Vector v = ray.getDirection(), n = sp.shadingNormal();
         double nv = n.dotProduct(v);
         for (LightSource light : scene.lights) {

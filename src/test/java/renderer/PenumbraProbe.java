@@ -51,7 +51,7 @@ final class PenumbraProbe {
     private boolean walk(Ray ray, int level, Double3 k, int rings, int perRing) {
         HitRecord hit = new HitRecord();
         if (!accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) return false;
-        hit.geometry.completeHit(ray, hit);
+        hit.complete(ray);
         SurfacePoint sp = new SurfacePoint(hit);
         for (LightSource light : scene.lights) {
             if (light.isSoft() && mixed(sp, light, rings, perRing)) return true;

@@ -70,7 +70,7 @@ class SceneBadInputTest {
                 error(VALID.replace("\"width\": 4", "\"widht\": 4")));
         assertMessage(
                 "bad.json:6:5: $.geometries[0]: unknown geometry type \"sphear\"; allowed: sphere, plane, triangle,"
-                        + " polygon, tube, cylinder, mesh, group",
+                        + " polygon, tube, cylinder, mesh, group, instance",
                 error(VALID.replace("\"sphere\"", "\"sphear\"")));
     }
 

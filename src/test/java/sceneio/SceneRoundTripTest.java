@@ -58,7 +58,7 @@ class SceneRoundTripTest {
         } finally {
             Files.deleteIfExists(copy);
         }
-        SceneDocument sparse = new SceneDocument(null, "sparse", null, null, null, null, null, null, null, null);
+        SceneDocument sparse = new SceneDocument(null, "sparse", null, null, null, null, null, null, null, null, null);
         String json = SceneWriter.toJson(sparse);
         assertEquals("{\n  \"name\" : \"sparse\"\n}\n", json);
     }
@@ -86,6 +86,7 @@ class SceneRoundTripTest {
                         null,
                         0.25),
                 Map.of("m", new MaterialDocument(Coefficient.of(awkward), null, null, 3, null, null, null, null)),
+                null,
                 List.of(),
                 List.of(
                         new SphereDocument(new Vec3(1, 2, 3), awkward, MaterialRef.named("m"), null),

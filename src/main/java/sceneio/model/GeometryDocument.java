@@ -4,7 +4,7 @@ import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
 /**
- * A geometry in a scene file, told apart by its {@code "type"}. All but {@code group} take an optional
+ * A geometry in a scene file, told apart by its {@code "type"}. All but {@code group} and {@code instance} take an optional
  * {@code material} (a name from {@code materials} or a material object) and {@code emission} colour.
  */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
@@ -16,7 +16,8 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
     @JsonSubTypes.Type(value = TubeDocument.class, name = "tube"),
     @JsonSubTypes.Type(value = CylinderDocument.class, name = "cylinder"),
     @JsonSubTypes.Type(value = MeshDocument.class, name = "mesh"),
-    @JsonSubTypes.Type(value = GroupDocument.class, name = "group")
+    @JsonSubTypes.Type(value = GroupDocument.class, name = "group"),
+    @JsonSubTypes.Type(value = InstanceDocument.class, name = "instance")
 })
 public sealed interface GeometryDocument
         permits SphereDocument,
@@ -26,4 +27,5 @@ public sealed interface GeometryDocument
                 TubeDocument,
                 CylinderDocument,
                 MeshDocument,
-                GroupDocument {}
+                GroupDocument,
+                InstanceDocument {}

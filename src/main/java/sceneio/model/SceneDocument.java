@@ -17,6 +17,7 @@ import java.util.Map;
  * @param camera where the camera is and where it looks (required)
  * @param render resolution and render settings (required: at least width and height)
  * @param materials named materials that geometries refer to by name
+ * @param prototypes named geometries that {@code instance} geometries place without copying them
  * @param lights the light sources
  * @param geometries the geometries
  */
@@ -29,6 +30,7 @@ import java.util.Map;
     "camera",
     "render",
     "materials",
+    "prototypes",
     "lights",
     "geometries"
 })
@@ -41,6 +43,7 @@ public record SceneDocument(
         CameraDocument camera,
         RenderDocument render,
         Map<String, MaterialDocument> materials,
+        Map<String, GeometryDocument> prototypes,
         List<LightDocument> lights,
         List<GeometryDocument> geometries) {
 
@@ -52,7 +55,7 @@ public record SceneDocument(
      */
     public SceneDocument withRender(RenderDocument render) {
         return new SceneDocument(
-                version, name, seed, background, ambient, camera, render, materials, lights, geometries);
+                version, name, seed, background, ambient, camera, render, materials, prototypes, lights, geometries);
     }
 
     /**
@@ -63,6 +66,6 @@ public record SceneDocument(
      */
     public SceneDocument withCamera(CameraDocument camera) {
         return new SceneDocument(
-                version, name, seed, background, ambient, camera, render, materials, lights, geometries);
+                version, name, seed, background, ambient, camera, render, materials, prototypes, lights, geometries);
     }
 }
