@@ -456,11 +456,11 @@ public final class Accelerator implements Intersectable {
         int count = scratch.transparentCount;
         double r = 1, g = 1, b = 1;
         if (count > 2) scratch.sortTransparentHits();
-        for (int i = 0; i < count; i++) {
-            Double3 kT = scratch.transparentKt[i];
-            r *= kT.d1;
-            g *= kT.d2;
-            b *= kT.d3;
+        double[] kt = scratch.transparentKt;
+        for (int i = 0; i < 3 * count; i += 3) {
+            r *= kt[i];
+            g *= kt[i + 1];
+            b *= kt[i + 2];
         }
         scratch.transmitR = r;
         scratch.transmitG = g;
@@ -576,19 +576,20 @@ public final class Accelerator implements Intersectable {
         if (!mayPass) return true;
         Double3 kT = owners[k].getMaterial().getKt();
         if (kT.isZero()) return true;
-        scratch.addTransparentHit(info[2 * k], kT);
+        scratch.addTransparentHit(info[2 * k], kT.d1, kT.d2, kT.d3);
         return false;
     }
 
     private static boolean blocks(
             Intersectable object, int id, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
         if (!mayPass) return object.occludes(ray, tMin, tMax, scratch);
+        if (object instanceof Instance instance) return instance.blocksLight(ray, tMin, tMax, scratch, id);
         // Every crossing of a transparent surface attenuates: walk all hits of this primitive in the segment.
         double from = tMin;
         while (object.intersect(ray, from, tMax, scratch)) {
             Double3 kT = scratch.geometry.getMaterial().getKt();
             if (kT.isZero()) return true;
-            scratch.addTransparentHit(id, kT);
+            scratch.addTransparentHit(id, kT.d1, kT.d2, kT.d3);
             from = scratch.t;
         }
         return false;

@@ -1,6 +1,5 @@
 package geometries;
 
-import primitives.Double3;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Vector;
@@ -73,34 +72,43 @@ public final class HitRecord {
      */
     public int occluderHint = -1, occluder = -1;
 
-    /** Transparent surfaces a shadow ray crossed: primitive id and kT, multiplied in id order. */
+    /**
+     * Transparent surfaces a shadow ray crossed: primitive id and kT (red, green, blue), multiplied in id order. An
+     * instance adds the product of its own surfaces' kT as one factor.
+     */
     int transparentCount;
 
     private int[] transparentIds = new int[8];
-    Double3[] transparentKt = new Double3[8];
+    double[] transparentKt = new double[3 * 8];
 
-    void addTransparentHit(int id, Double3 kT) {
+    void addTransparentHit(int id, double r, double g, double b) {
         if (transparentCount == transparentIds.length) {
             transparentIds = java.util.Arrays.copyOf(transparentIds, 2 * transparentCount);
-            transparentKt = java.util.Arrays.copyOf(transparentKt, 2 * transparentCount);
+            transparentKt = java.util.Arrays.copyOf(transparentKt, 6 * transparentCount);
         }
         transparentIds[transparentCount] = id;
-        transparentKt[transparentCount++] = kT;
+        int o = 3 * transparentCount++;
+        transparentKt[o] = r;
+        transparentKt[o + 1] = g;
+        transparentKt[o + 2] = b;
     }
 
     /** Insertion sort by primitive id (stable, so hits of one primitive keep their order); lists are tiny. */
     void sortTransparentHits() {
+        double[] kt = transparentKt;
         for (int i = 1; i < transparentCount; i++) {
             int id = transparentIds[i];
-            Double3 kT = transparentKt[i];
+            double r = kt[3 * i], g = kt[3 * i + 1], b = kt[3 * i + 2];
             int j = i - 1;
             while (j >= 0 && transparentIds[j] > id) {
                 transparentIds[j + 1] = transparentIds[j];
-                transparentKt[j + 1] = transparentKt[j];
+                System.arraycopy(kt, 3 * j, kt, 3 * j + 3, 3);
                 j--;
             }
             transparentIds[j + 1] = id;
-            transparentKt[j + 1] = kT;
+            kt[3 * j + 3] = r;
+            kt[3 * j + 4] = g;
+            kt[3 * j + 5] = b;
         }
     }
 

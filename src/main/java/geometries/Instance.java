@@ -124,6 +124,29 @@ public final class Instance implements Intersectable {
     }
 
     /**
+     * The shadow query through this instance for {@link Accelerator#passesLight}: true when an opaque surface of the
+     * prototype blocks the segment; otherwise the product of the kT of its transparent surfaces crossed is added to
+     * {@code scratch} as one factor (none when it is exactly 1), under {@code id}. The prototype's own shadow query
+     * skips its clear surfaces and stops at the first opaque one, as the scene's does.
+     */
+    boolean blocksLight(Ray ray, double tMin, double tMax, HitRecord scratch, int id) {
+        HitRecord inner = scratch.inner();
+        double shift = toLocal(ray, inner);
+        double scale = inner.localScale;
+        inner.occluderHint = -1;
+        boolean passes = prototype
+                .search(scratch.withoutBvh)
+                .passesLight(inner.localRay, Math.max(0, tMin * scale - shift), tMax * scale - shift, inner);
+        scratch.nodeVisits += inner.nodeVisits;
+        scratch.primitiveTests += inner.primitiveTests;
+        inner.nodeVisits = inner.primitiveTests = 0;
+        if (!passes) return true;
+        double r = inner.transmitR, g = inner.transmitG, b = inner.transmitB;
+        if (r != 1 || g != 1 || b != 1) scratch.addTransparentHit(id, r, g, b);
+        return false;
+    }
+
+    /**
      * Fills the surface data of a hit on this instance in scene coordinates: the prototype's surface completes the
      * hit along the local ray, then point, normals and error bound are carried back.
      *
