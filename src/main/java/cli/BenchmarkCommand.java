@@ -6,11 +6,11 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code raytracer benchmark bvh|planning|render|effects [args]}: the benchmarks, each printing a Markdown table.
+ * {@code raytracer benchmark bvh|planning|render|effects|instancing [args]}: the benchmarks, each printing a Markdown table.
  * {@code bvh} takes {@code runs=N threads=1,2 only=workload,...} (see docs/BENCHMARKS.md; it wants a large heap,
  * so {@code mvn -Pbenchmark} runs it in a JVM of its own); {@code planning} takes the number of runs; {@code render}
  * takes {@code --runs N --threads 1,2 --only NAME --csv FILE --images DIR --baseline FILE --light-cutoff STEPS};
- * {@code effects} takes runs, width and height.
+ * {@code effects} takes runs, width and height; {@code instancing} takes runs and the grove's side.
  */
 @Command(
         name = "benchmark",
@@ -18,12 +18,13 @@ import picocli.CommandLine.Parameters;
         subcommands = RenderBenchmarkCommand.class,
         description = "Runs a benchmark: bvh (BVH on/off, threads), planning (effect planning on/off), "
                 + "render (real renders: time, rays, allocation; --baseline FILE compares), "
-                + "effects (time factor of each sampled effect).")
+                + "effects (time factor of each sampled effect), "
+                + "instancing (instances vs copies: memory, build, render).")
 public final class BenchmarkCommand implements Callable<Integer> {
     @Parameters(
             index = "0",
             arity = "0..1",
-            paramLabel = "bvh|planning|effects",
+            paramLabel = "bvh|planning|effects|instancing",
             description = "which benchmark (render is a subcommand with options of its own)")
     private String which;
 
@@ -33,7 +34,8 @@ public final class BenchmarkCommand implements Callable<Integer> {
     @Override
     public Integer call() throws BadInputException {
         if (which == null) {
-            throw new BadInputException("benchmark: which benchmark? allowed: bvh, planning, render, effects");
+            throw new BadInputException(
+                    "benchmark: which benchmark? allowed: bvh, planning, render, effects, instancing");
         }
         String[] rest = args.toArray(new String[0]);
         try {
@@ -41,9 +43,10 @@ public final class BenchmarkCommand implements Callable<Integer> {
                 case "bvh" -> benchmark.BvhBenchmark.main(rest);
                 case "planning" -> benchmark.PlanningBenchmark.main(rest);
                 case "effects" -> app.FeatureGallery.main(rest);
+                case "instancing" -> benchmark.InstancingBenchmark.main(rest);
                 default ->
-                    throw new BadInputException(
-                            "benchmark: unknown benchmark '" + which + "'; allowed: bvh, planning, render, effects");
+                    throw new BadInputException("benchmark: unknown benchmark '" + which
+                            + "'; allowed: bvh, planning, render, effects, instancing");
             }
         } catch (NumberFormatException e) {
             // "For input string: \"many\"": the value alone, as the user wrote it.
