@@ -4,9 +4,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import primitives.Point;
 import primitives.Ray;
 import primitives.ReusableRay;
@@ -33,9 +30,6 @@ import scene.Scene;
  * the separate {@code writeToImage} calls), and an interrupted caller keeps its interrupt status.
  */
 public final class Camera implements Cloneable {
-    /** Side of the square tiles the render threads take from the queue, in pixels. */
-    static final int TILE = 16;
-
     private Point location;
     private Vector vTo, vUp, vRight;
     private double vpWidth, vpHeight, vpDistance;
@@ -48,6 +42,10 @@ public final class Camera implements Cloneable {
     private double focalDistance = 0;
     private SamplingConfig apertureSampling = new SamplingConfig(16, TargetShape.CIRCLE, SamplingPattern.JITTERED);
     private ProgressListener progress;
+    /** Progressive sampling toward a target error or a time budget, or null for the fixed anti-aliasing. */
+    private ProgressiveSettings progressive;
+    /** What the last progressive render did, or null. */
+    private ProgressiveReport lastProgressive;
     /** Set by {@link #cancel()}; cleared when a render starts. */
     private volatile boolean cancelRequested;
 
@@ -179,6 +177,36 @@ public final class Camera implements Cloneable {
     public Camera setProgressListener(ProgressListener listener) {
         this.progress = listener;
         return this;
+    }
+
+    /**
+     * Samples pixels progressively toward a target error or within a time budget instead of with the fixed
+     * anti-aliasing (see {@link ProgressiveSettings}); the anti-aliasing's shape and pattern are then not used.
+     *
+     * @param settings the target or budget, or null for the fixed anti-aliasing
+     * @return this camera
+     */
+    public Camera setProgressive(ProgressiveSettings settings) {
+        this.progressive = settings;
+        return this;
+    }
+
+    /**
+     * The progressive sampling settings.
+     *
+     * @return the settings, or null when the fixed anti-aliasing is used
+     */
+    public ProgressiveSettings getProgressive() {
+        return progressive;
+    }
+
+    /**
+     * What the last progressive render predicted and spent.
+     *
+     * @return the report, or null if the last render was not progressive
+     */
+    public ProgressiveReport getLastProgressiveReport() {
+        return lastProgressive;
     }
 
     /**
@@ -376,6 +404,11 @@ public final class Camera implements Cloneable {
      * @throws IllegalArgumentException if the rectangle is empty or not inside the image
      */
     public ImageRegion renderRegion(int x0, int y0, int width, int height) {
+        if (progressive != null) {
+            throw new IllegalStateException("progressive sampling plans its samples over the whole image, so a region"
+                    + " would not match the same pixels of renderImage(): render whole images, or use fixed"
+                    + " anti-aliasing");
+        }
         RenderMemory.check(this, width, height);
         ImageRegion region = new ImageRegion(x0, y0, width, height, nX, nY);
         lastStatistics = render(x0, y0, width, height, region::writePixel);
@@ -400,53 +433,21 @@ public final class Camera implements Cloneable {
     private RenderStatistics render(int x0, int y0, int width, int height, PixelSink sink) {
         long start = System.nanoTime();
         cancelRequested = false;
-        Thread caller = Thread.currentThread();
-        // Set once the caller was interrupted or cancel() called: every render thread stops at its next row.
-        AtomicBoolean stop = new AtomicBoolean();
+        lastProgressive = null;
         rayTracer.prepare(settings);
         double preparation = rayTracer.preparationSeconds();
         PixelSampler pixels = new PixelSampler(this);
-        int xEnd = x0 + width, yEnd = y0 + height;
-        int tilesX = (width + TILE - 1) / TILE, tilesY = (height + TILE - 1) / TILE, total = tilesX * tilesY;
-        AtomicInteger next = new AtomicInteger();
-        AtomicInteger done = new AtomicInteger();
-        AtomicReference<Throwable> failure = new AtomicReference<>();
         int workers = RenderMemory.workers(this, width, height);
         List<TraceContext> contexts = new ArrayList<>();
         for (int w = 0; w < workers; w++) contexts.add(new TraceContext());
-        Runnable[] jobs = new Runnable[workers];
-        for (int w = 0; w < workers; w++) {
-            TraceContext ctx = contexts.get(w);
-            jobs[w] = () -> {
-                try {
-                    for (int t = next.getAndIncrement();
-                            t < total && failure.get() == null;
-                            t = next.getAndIncrement()) {
-                        int tx = x0 + (t % tilesX) * TILE, ty = y0 + (t / tilesX) * TILE;
-                        for (int y = ty; y < Math.min(ty + TILE, yEnd); y++) {
-                            if (stop.get() || cancelRequested || caller.isInterrupted()) {
-                                stop.set(true);
-                                throw new CancellationException("render cancelled after " + done.get() + " of " + total
-                                        + " tiles; no image was produced");
-                            }
-                            for (int x = tx; x < Math.min(tx + TILE, xEnd); x++) {
-                                pixels.render(x, y, ctx);
-                                sink.write(x, y, ctx.red, ctx.green, ctx.blue);
-                            }
-                        }
-                        int finished = done.incrementAndGet();
-                        if (progress != null) progress.tileFinished(finished, total);
-                    }
-                } catch (Throwable e) {
-                    failure.compareAndSet(null, e);
-                }
-            };
+        if (progressive == null) {
+            tiles().run(x0, y0, width, height, contexts, (x, y, ctx) -> {
+                pixels.render(x, y, ctx);
+                sink.write(x, y, ctx.red, ctx.green, ctx.blue);
+            });
+        } else {
+            renderProgressively(pixels, contexts, start, sink);
         }
-        runAll(jobs, () -> stop.set(true));
-        Throwable error = failure.get();
-        if (error instanceof RuntimeException re) throw re;
-        if (error instanceof Error err) throw err;
-        if (error != null) throw new IllegalStateException("render failed: " + error, error);
 
         RayCounters rays = new RayCounters();
         long visits = 0, tests = 0;
@@ -460,36 +461,24 @@ public final class Camera implements Cloneable {
                 wall, preparation, workers, (long) width * height, rays, visits, tests, rayTracer.describePlan());
     }
 
-    /**
-     * Stack of each render thread: recursion to {@link RenderSettings#MAX_LEVEL} between two perfect mirrors needs
-     * about 1 MB interpreted; 8 MB leaves room, whatever stack the calling thread has (only reserved, not used).
-     */
-    private static final long RENDER_STACK_BYTES = 8L << 20;
+    /** The render threads' tile loop, stopping when {@link #cancel()} is called. */
+    private TileRunner tiles() {
+        return new TileRunner(progress, () -> cancelRequested);
+    }
 
-    /**
-     * Runs the jobs on threads of their own, with a known stack, and waits for them; {@code onInterrupt} runs if
-     * the caller is interrupted while it waits (waiting clears the interrupt status, so the jobs would not see
-     * it), and the status is restored at the end.
-     */
-    private static void runAll(Runnable[] jobs, Runnable onInterrupt) {
-        Thread[] started = new Thread[jobs.length];
-        for (int i = 0; i < started.length; i++) {
-            started[i] = new Thread(null, jobs[i], "render-" + i, RENDER_STACK_BYTES);
-            started[i].start();
-        }
-        for (Thread t : started) {
-            boolean interrupted = false;
-            while (true) {
-                try {
-                    t.join();
-                    break;
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                    onInterrupt.run();
-                }
+    /** Progressive passes over the whole image (see {@link ProgressiveSampler}), then the pixels into the sink. */
+    private void renderProgressively(PixelSampler pixels, List<TraceContext> contexts, long start, PixelSink sink) {
+        ProgressiveSampler sampler = new ProgressiveSampler(pixels, progressive, nX, nY);
+        TileRunner tiles = tiles();
+        sampler.render(() -> tiles.run(0, 0, nX, nY, contexts, sampler::advance), start);
+        double[] rgb = new double[3];
+        for (int y = 0; y < nY; y++) {
+            for (int x = 0; x < nX; x++) {
+                sampler.mean(x, y, rgb);
+                sink.write(x, y, rgb[0], rgb[1], rgb[2]);
             }
-            if (interrupted) Thread.currentThread().interrupt();
         }
+        lastProgressive = sampler.report();
     }
 
     /**
@@ -751,6 +740,17 @@ public final class Camera implements Cloneable {
          */
         public Builder setProgressListener(ProgressListener listener) {
             camera.setProgressListener(listener);
+            return this;
+        }
+
+        /**
+         * Sets progressive sampling; see {@link Camera#setProgressive}.
+         *
+         * @param settings the target error or time budget, or null for the fixed anti-aliasing
+         * @return this builder
+         */
+        public Builder setProgressive(ProgressiveSettings settings) {
+            camera.setProgressive(settings);
             return this;
         }
 

@@ -18,6 +18,8 @@ import renderer.sampling.TargetShape;
  */
 final class PixelSampler {
     private static final long AA_STREAM = 11, LENS_STREAM = 12, ADAPTIVE_PATHS = 1L << 40;
+    /** Streams of progressive sampling: the two halves' shifts, and the paths of their samples. */
+    private static final long PROGRESSIVE_SHIFT = 13, PROGRESSIVE_PATHS = 1L << 41;
 
     private final Camera camera;
     private final RayTracerBase rayTracer;
@@ -94,6 +96,24 @@ final class PixelSampler {
             average.add(ctx);
         }
         average.meanInto(ctx);
+    }
+
+    /**
+     * Sample {@code index} of half {@code half} (0 or 1) of pixel (x, y) for progressive sampling, into
+     * {@code ctx.red, green, blue}: the Halton point of that index, shifted by the half's own random offset
+     * (Cranley-Patterson rotation), so that the two halves are independent low-discrepancy estimates of the pixel.
+     */
+    void progressiveSample(int x, int y, int half, int index, TraceContext ctx) {
+        long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
+        SampleStream shift = ctx.random.reset(SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + half));
+        double rx = shift.nextDouble(), ry = shift.nextDouble();
+        double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + rx;
+        double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + ry;
+        if (ox >= 1) ox -= 1;
+        if (oy >= 1) oy -= 1;
+        double u = (x - (nX - 1) / 2.0 + ox - 0.5) * pixelWidth;
+        double v = -(y - (nY - 1) / 2.0 + oy - 0.5) * pixelHeight;
+        sample(u, v, SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half), ctx);
     }
 
     /**

@@ -55,7 +55,9 @@ public final class RenderMemory {
     /** {@link #check(Camera, int, int)} against the heap {@code heap} reports (tests give a small one). */
     static void check(Camera camera, int width, int height, java.util.function.LongSupplier heap) {
         long pixels = (long) width * height;
-        long image = pixels * BYTES_PER_PIXEL;
+        // A progressive render also keeps its two halves' sums and sample counts per pixel.
+        int perPixel = BYTES_PER_PIXEL + (camera.getProgressive() != null ? ProgressiveSampler.BYTES_PER_PIXEL : 0);
+        long image = pixels * perPixel;
         long primitives = primitives(camera.getRayTracer().getScene().geometries);
         if (primitives > Limits.MAX_PRIMITIVES) {
             throw new IllegalStateException(String.format(
@@ -76,12 +78,7 @@ public final class RenderMemory {
         if (needed <= available) return;
         StringBuilder parts = new StringBuilder();
         parts.append(String.format(
-                Locale.ROOT,
-                "the %d x %d image %s at %d bytes per pixel",
-                width,
-                height,
-                bytes(image),
-                BYTES_PER_PIXEL));
+                Locale.ROOT, "the %d x %d image %s at %d bytes per pixel", width, height, bytes(image), perPixel));
         if (primitives > 0) {
             parts.append(String.format(Locale.ROOT, ", %,d primitives %s", primitives, bytes(geometry)));
         }
@@ -108,7 +105,8 @@ public final class RenderMemory {
 
     /** Render threads the camera starts for a region: one per tile at most, and never above the machine's limit. */
     static int workers(Camera camera, int width, int height) {
-        long tiles = (long) ((width + Camera.TILE - 1) / Camera.TILE) * ((height + Camera.TILE - 1) / Camera.TILE);
+        long tiles = (long) ((width + TileRunner.TILE - 1) / TileRunner.TILE)
+                * ((height + TileRunner.TILE - 1) / TileRunner.TILE);
         return (int) Math.min(Math.min(camera.getThreads(), Limits.maxThreads()), tiles);
     }
 

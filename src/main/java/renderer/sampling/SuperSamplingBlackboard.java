@@ -150,12 +150,24 @@ public final class SuperSamplingBlackboard {
         return x >= 1 ? x - 1 : x;
     }
 
-    /** Van der Corput in base 2 by bit reversal. */
-    static double radicalInverse2(int i) {
+    /**
+     * The van der Corput radical inverse in base 2 (by bit reversal): the first coordinate of the Halton sequence.
+     *
+     * @param i the index, at least 0
+     * @return the radical inverse in [0, 1)
+     */
+    public static double radicalInverse2(int i) {
         return (Integer.reverse(i) >>> 1) * 0x1.0p-31;
     }
 
-    static double radicalInverse(int base, int i) {
+    /**
+     * The radical inverse of {@code i} in {@code base}: the Halton sequence's coordinate of that prime base.
+     *
+     * @param base the base, at least 2
+     * @param i the index, at least 0
+     * @return the radical inverse in [0, 1)
+     */
+    public static double radicalInverse(int base, int i) {
         double inverseBase = 1.0 / base, factor = inverseBase, result = 0;
         while (i > 0) {
             result += (i % base) * factor;

@@ -1,0 +1,253 @@
+package renderer;
+
+import java.util.Arrays;
+
+/**
+ * The state of a progressive render (see {@link ProgressiveSettings}): per pixel, the sums of its two independent
+ * halves of samples and how many each half holds, and between passes the plan of how many each pixel gets next.
+ *
+ * <p>A pixel's error estimate is {@code ((A - B) / 2)^2} per channel, A and B the means of its halves clamped to the
+ * displayable 0..255: the expected squared error of their mean, exact for independent halves, whatever the sampling
+ * pattern. Per pixel it is noisy (one degree of freedom), so the prediction averages each pixel's per-sample variance
+ * over its 3 x 3 neighbourhood and the plan weighs pixels by the neighbourhood's largest. The plan assumes the error falls as
+ * 1/n (true for independent samples; low-discrepancy samples do at least as well), and the next pass measures again.
+ *
+ * <p>Pixels are planned in image order and each pass's decisions depend only on the pixels' values, so the samples,
+ * and the image, are the same for any number of threads (a time budget, which measures time, is the exception).
+ */
+final class ProgressiveSampler {
+    /** A pass may multiply a pixel's samples by at most this: estimates are checked again before going further. */
+    private static final int GROWTH = 8;
+
+    private final PixelSampler pixels;
+    private final ProgressiveSettings settings;
+    private final int nX, nY;
+    /** Per pixel: red, green, blue sums of half A, then of half B. */
+    private final double[] sums;
+    /** Per pixel: samples in each half so far, and the count each half should reach in the coming pass. */
+    private final int[] done, goal;
+
+    private int passes;
+
+    ProgressiveSampler(PixelSampler pixels, ProgressiveSettings settings, int nX, int nY) {
+        this.pixels = pixels;
+        this.settings = settings;
+        this.nX = nX;
+        this.nY = nY;
+        int n = nX * nY;
+        sums = new double[6 * n];
+        done = new int[n];
+        goal = new int[n];
+        Arrays.fill(goal, settings.minSamples() / 2);
+    }
+
+    /**
+     * Runs the passes: the minimum samples everywhere, then passes planned from the measured errors (toward the target)
+     * or from the measured time per sample (to spend the budget, which counts from {@code start}, a
+     * {@link System#nanoTime()}), until the target is met, the budget spent or every pixel at its maximum.
+     * {@code pass} runs {@link #advance} over every pixel on the render threads.
+     */
+    void render(Runnable pass, long start) {
+        double budget = settings.timeBudgetSeconds();
+        long passStart = System.nanoTime();
+        pass.run();
+        passes++;
+        double perSample = (System.nanoTime() - passStart) * 1e-9 / Math.max(1, samples());
+        while (true) {
+            long planned;
+            if (budget > 0) {
+                double left = budget - (System.nanoTime() - start) * 1e-9;
+                // A little is kept for writing the image: the last pass is planned to end just inside the budget.
+                planned = planForSamples((long) (0.95 * left / perSample));
+            } else {
+                planned = planForError(settings.targetError());
+            }
+            if (planned == 0) break;
+            long before = samples();
+            passStart = System.nanoTime();
+            pass.run();
+            passes++;
+            long taken = samples() - before;
+            if (taken > 0) perSample = (System.nanoTime() - passStart) * 1e-9 / taken;
+        }
+    }
+
+    /** What the render predicted and spent. */
+    ProgressiveReport report() {
+        int[] range = sampleRange();
+        return new ProgressiveReport(settings, predictedError(), samples(), passes, range[0], range[1], range[2]);
+    }
+
+    /** Bytes per pixel of this state. */
+    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4;
+
+    /** Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass). */
+    void advance(int x, int y, TraceContext ctx) {
+        int p = y * nX + x;
+        int o = 6 * p;
+        for (int i = done[p], end = goal[p]; i < end; i++) {
+            for (int half = 0; half < 2; half++) {
+                pixels.progressiveSample(x, y, half, i, ctx);
+                sums[o + 3 * half] += ctx.red;
+                sums[o + 3 * half + 1] += ctx.green;
+                sums[o + 3 * half + 2] += ctx.blue;
+            }
+        }
+        done[p] = Math.max(done[p], goal[p]);
+    }
+
+    /** The pixel's colour: the mean of all its samples, into {@code out} (red, green, blue). */
+    void mean(int x, int y, double[] out) {
+        int p = y * nX + x, o = 6 * p;
+        double n = 2.0 * done[p];
+        out[0] = (sums[o] + sums[o + 3]) / n;
+        out[1] = (sums[o + 1] + sums[o + 4]) / n;
+        out[2] = (sums[o + 2] + sums[o + 5]) / n;
+    }
+
+    /** The estimated squared error of pixel {@code p}'s colour, averaged over its channels. */
+    private double errorSquared(int p) {
+        int o = 6 * p;
+        double inverse = 1.0 / done[p], e = 0;
+        for (int c = 0; c < 3; c++) {
+            double a = clamp(sums[o + c] * inverse), b = clamp(sums[o + 3 + c] * inverse);
+            e += (a - b) * (a - b);
+        }
+        return e / 12; // ((A - B) / 2)^2, averaged over the three channels
+    }
+
+    private static double clamp(double v) {
+        return v < 0 ? 0 : v > 255 ? 255 : v;
+    }
+
+    /**
+     * The predicted RMSE of the image against the converged one, on the 0..255 scale: per pixel, the variance of one
+     * sample averaged over its 3 x 3 neighbourhood, over the pixel's samples. (The pixel's own estimate alone is
+     * biased low once it has decided the pixel's samples: pixels whose few samples agreed by chance stop early and
+     * keep their estimate of zero.)
+     */
+    double predictedError() {
+        double[] variance = sampleVariances(errors());
+        double sum = 0;
+        for (int p = 0, n = done.length; p < n; p++) sum += smoothed(variance, p, false) / (2.0 * done[p]);
+        return Math.sqrt(sum / done.length);
+    }
+
+    /** Samples taken so far (both halves of every pixel). */
+    long samples() {
+        long total = 0;
+        for (int d : done) total += 2L * d;
+        return total;
+    }
+
+    /** Samples per pixel: the smallest, the median and the largest. */
+    private int[] sampleRange() {
+        int[] sorted = done.clone();
+        Arrays.sort(sorted);
+        return new int[] {2 * sorted[0], 2 * sorted[sorted.length / 2], 2 * sorted[sorted.length - 1]};
+    }
+
+    /**
+     * Plans the next pass toward {@code target}: the fewest samples for which the 1/n law predicts an image RMSE of
+     * {@code target}; returns the samples planned (0 when the target is met or no pixel may take more).
+     */
+    long planForError(double target) {
+        double[] variance = sampleVariances(errors());
+        double[] mean = new double[variance.length], weight = new double[variance.length];
+        double mse = 0;
+        for (int p = 0; p < variance.length; p++) {
+            mean[p] = smoothed(variance, p, false);
+            weight[p] = Math.sqrt(smoothed(variance, p, true));
+            mse += mean[p] / (2.0 * done[p]);
+        }
+        mse /= variance.length;
+        if (mse <= target * target) return 0;
+        // The predicted MSE falls as lambda grows: find the lambda that meets the target (or the most we may do).
+        double lo = 0, hi = 1;
+        while (predictedMse(mean, weight, hi) > target * target && hi < 1e30) hi *= 2;
+        for (int i = 0; i < 60; i++) {
+            double mid = (lo + hi) / 2;
+            if (predictedMse(mean, weight, mid) > target * target) lo = mid;
+            else hi = mid;
+        }
+        return setGoals(weight, hi);
+    }
+
+    /** Plans the next pass to spend about {@code budget} more samples where the estimates are highest. */
+    long planForSamples(long budget) {
+        if (budget <= 0) return 0;
+        double[] variance = sampleVariances(errors());
+        double[] weight = new double[variance.length];
+        for (int p = 0; p < variance.length; p++) weight[p] = Math.sqrt(smoothed(variance, p, true));
+        double lo = 0, hi = 1;
+        while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
+        for (int i = 0; i < 60; i++) {
+            double mid = (lo + hi) / 2;
+            if (extra(weight, mid) < budget) lo = mid;
+            else hi = mid;
+        }
+        return setGoals(weight, lo);
+    }
+
+    private double[] errors() {
+        double[] e2 = new double[done.length];
+        for (int p = 0; p < e2.length; p++) e2[p] = errorSquared(p);
+        return e2;
+    }
+
+    /** The variance of one sample of each pixel: its error estimate times its samples. */
+    private double[] sampleVariances(double[] e2) {
+        double[] v = new double[e2.length];
+        for (int p = 0; p < v.length; p++) v[p] = e2[p] * 2.0 * done[p];
+        return v;
+    }
+
+    /**
+     * The mean (or, with {@code largest}, the largest) of {@code values} over the 3 x 3 neighbourhood of pixel
+     * {@code p}: neighbours see much the same noise, and an edge that one pixel's samples all missed is often seen
+     * by a neighbour's.
+     */
+    private double smoothed(double[] values, int p, boolean largest) {
+        int x = p % nX, y = p / nX;
+        double sum = 0, max = 0;
+        int count = 0;
+        for (int j = Math.max(0, y - 1); j <= Math.min(nY - 1, y + 1); j++) {
+            for (int i = Math.max(0, x - 1); i <= Math.min(nX - 1, x + 1); i++) {
+                double v = values[j * nX + i];
+                sum += v;
+                max = Math.max(max, v);
+                count++;
+            }
+        }
+        return largest ? max : sum / count;
+    }
+
+    /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
+    private int halfGoal(double[] weight, double lambda, int p) {
+        int max = Math.min(settings.maxSamples() / 2, GROWTH * done[p]);
+        double wanted = Math.ceil(lambda * weight[p] / 2);
+        return (int) Math.max(done[p], Math.min(max, wanted));
+    }
+
+    /** The image MSE the 1/n law predicts for per-sample variances {@code variance} after planning with lambda. */
+    private double predictedMse(double[] variance, double[] weight, double lambda) {
+        double sum = 0;
+        for (int p = 0; p < variance.length; p++) sum += variance[p] / (2.0 * halfGoal(weight, lambda, p));
+        return sum / variance.length;
+    }
+
+    private long extra(double[] weight, double lambda) {
+        long sum = 0;
+        for (int p = 0; p < done.length; p++) sum += 2L * (halfGoal(weight, lambda, p) - done[p]);
+        return sum;
+    }
+
+    private long setGoals(double[] weight, double lambda) {
+        long planned = 0;
+        for (int p = 0; p < done.length; p++) {
+            goal[p] = halfGoal(weight, lambda, p);
+            planned += 2L * (goal[p] - done[p]);
+        }
+        return planned;
+    }
+}

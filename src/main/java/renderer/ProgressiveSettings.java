@@ -1,0 +1,85 @@
+package renderer;
+
+import primitives.Limits;
+
+/**
+ * Progressive sampling: instead of a fixed count of camera rays per pixel, the renderer measures its own error and
+ * spends samples where the error is highest, until the image reaches a target error or the render a time budget.
+ *
+ * <p>Every pixel starts with {@code minSamples} samples from two independently shifted Halton sequences (half each);
+ * the difference of the two halves' means estimates the pixel's error honestly, whatever the sampling pattern (it is
+ * the error of the mean of two independent estimates, not a variance model). Between passes the samples are
+ * reallocated in proportion to each pixel's estimated noise (the largest of its 3 x 3 neighbourhood, so that edges
+ * seen by a neighbour are refined too), never beyond {@code maxSamples}.
+ *
+ * @param targetError the image RMSE to reach, in display steps (0..255 scale), or 0 for none
+ * @param timeBudgetSeconds the wall time to spend on the render, or 0 for none
+ * @param minSamples samples every pixel starts with: even, 4 to {@code maxSamples}
+ * @param maxSamples the most samples a pixel may receive, up to 1,048,576
+ */
+public record ProgressiveSettings(double targetError, double timeBudgetSeconds, int minSamples, int maxSamples) {
+    /** Samples every pixel starts with unless told otherwise. */
+    public static final int DEFAULT_MIN_SAMPLES = 16;
+    /** The most samples a pixel receives unless told otherwise. */
+    public static final int DEFAULT_MAX_SAMPLES = 4096;
+
+    /**
+     * Checks the settings.
+     *
+     * @throws IllegalArgumentException if not exactly one of target error and time budget is positive, or the sample
+     *     counts are out of range
+     */
+    public ProgressiveSettings {
+        if (!(targetError >= 0 && targetError <= 255)) {
+            throw new IllegalArgumentException(
+                    "target error must be 0 to 255 display steps (0: none), but was " + targetError);
+        }
+        if (!(timeBudgetSeconds >= 0 && timeBudgetSeconds <= 1e7)) {
+            throw new IllegalArgumentException(
+                    "time budget must be 0 to 1e7 seconds (0: none), but was " + timeBudgetSeconds);
+        }
+        if ((targetError > 0) == (timeBudgetSeconds > 0)) {
+            throw new IllegalArgumentException("give exactly one of a target error and a time budget, but they were "
+                    + targetError + " and " + timeBudgetSeconds + " s");
+        }
+        if (minSamples < 4 || minSamples % 2 != 0) {
+            throw new IllegalArgumentException(
+                    "minimum samples must be even and at least 4 (two halves of 2), but was " + minSamples);
+        }
+        if (maxSamples < minSamples || maxSamples > Limits.MAX_SAMPLES) {
+            throw new IllegalArgumentException("maximum samples must be " + minSamples + " (the minimum) to "
+                    + Limits.MAX_SAMPLES + ", but was " + maxSamples);
+        }
+    }
+
+    /**
+     * Sample until the image's estimated RMSE is at most {@code displaySteps}.
+     *
+     * @param displaySteps the target RMSE on the 0..255 scale, positive
+     * @return the settings
+     */
+    public static ProgressiveSettings targetError(double displaySteps) {
+        return new ProgressiveSettings(displaySteps, 0, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
+    }
+
+    /**
+     * Sample for {@code seconds} of wall time in all, spending samples where the estimated error is highest.
+     *
+     * @param seconds the wall time of the whole render, positive
+     * @return the settings
+     */
+    public static ProgressiveSettings timeBudget(double seconds) {
+        return new ProgressiveSettings(0, seconds, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
+    }
+
+    /**
+     * These settings with other sample bounds.
+     *
+     * @param min samples every pixel starts with (even, at least 4)
+     * @param max the most samples per pixel
+     * @return the new settings
+     */
+    public ProgressiveSettings withSamples(int min, int max) {
+        return new ProgressiveSettings(targetError, timeBudgetSeconds, min, max);
+    }
+}
