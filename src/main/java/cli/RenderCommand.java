@@ -132,6 +132,9 @@ public final class RenderCommand implements Callable<Integer> {
         if (!quiet) {
             out.println("wrote " + Printable.message(target.toString()));
             out.print(camera.getLastStatistics().format());
+            if (camera.getLastProgressiveReport() != null) {
+                out.println(camera.getLastProgressiveReport().describe());
+            }
             out.flush();
         }
         return ExitCodes.OK;

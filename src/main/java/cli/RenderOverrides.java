@@ -55,6 +55,22 @@ public final class RenderOverrides implements Serializable {
                     + " faint to matter, 0 (exact) to 255 (default: the scene's, else 0.5)")
     private Double lightCutoff;
 
+    /** {@code --target-error}: progressive sampling to this image RMSE, or null to keep the scene's sampling. */
+    @Option(
+            names = "--target-error",
+            paramLabel = "E",
+            description = "sample progressively until the image's estimated RMSE is at most E display steps (0..255"
+                    + " scale); replaces the fixed anti-aliasing and the scene's target or budget")
+    private Double targetError;
+
+    /** {@code --time-budget}: progressive sampling for this many seconds, or null to keep the scene's sampling. */
+    @Option(
+            names = "--time-budget",
+            paramLabel = "S",
+            description = "sample progressively for S seconds of wall time, where the estimated error is highest;"
+                    + " replaces the fixed anti-aliasing and the scene's target or budget")
+    private Double timeBudget;
+
     /** No overrides: the scene file's settings (picocli fills the options of a mixin it creates this way). */
     public RenderOverrides() {}
 
@@ -89,6 +105,15 @@ public final class RenderOverrides implements Serializable {
         if (lightCutoff != null && !(lightCutoff >= 0 && lightCutoff <= 255)) {
             throw new BadInputException("--light-cutoff must be in [0, 255] display steps, but was " + lightCutoff);
         }
+        if (targetError != null && timeBudget != null) {
+            throw new BadInputException("give either --target-error or --time-budget, not both");
+        }
+        if (targetError != null && !(targetError > 0 && targetError <= 255)) {
+            throw new BadInputException("--target-error must be in (0, 255] display steps, but was " + targetError);
+        }
+        if (timeBudget != null && !(timeBudget > 0 && timeBudget <= 1e7)) {
+            throw new BadInputException("--time-budget must be in (0, 1e7] seconds, but was " + timeBudget);
+        }
     }
 
     /** Longest image side: an image holds at most 2^28 pixels (the loader checks the product). */
@@ -112,6 +137,7 @@ public final class RenderOverrides implements Serializable {
         if (r == null) return d; // the loader reports the missing section
         if (bvh != null) r = r.withBvh(bvh == Switch.ON);
         if (lightCutoff != null) r = r.withLightCutoff(lightCutoff);
+        if (targetError != null || timeBudget != null) r = r.withProgressive(targetError, timeBudget);
         if (samples != null) {
             SamplingDocument aa = r.antiAliasing();
             r = r.withAntiAliasing(

@@ -39,6 +39,7 @@ import primitives.Ray;
 import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
+import renderer.ProgressiveSettings;
 import renderer.RayTracerType;
 import renderer.RenderMemory;
 import renderer.RenderSettings;
@@ -250,6 +251,7 @@ final class SceneBuilder {
             settings = core(rp.field("lightCutoff"), () -> s.withLightCutoff(r.lightCutoff()));
         }
         b.setRenderSettings(settings);
+        b.setProgressive(progressive(rp, r));
         b.setRayTracer(scene, RayTracerType.SIMPLE);
         Camera camera = core(at, b::build);
         // Memory last: it depends on the image, the samples, the threads and the geometry together.
@@ -368,6 +370,20 @@ final class SceneBuilder {
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
         return geometry;
+    }
+
+    /** Progressive sampling from {@code targetError} or {@code timeBudget}, or null for fixed sampling. */
+    private ProgressiveSettings progressive(JsonPath rp, RenderDocument r) throws SceneFileException {
+        if (r.targetError() != null && r.timeBudget() != null) {
+            throw fail(rp.field("timeBudget"), "give either \"targetError\" or \"timeBudget\", not both");
+        }
+        if (r.targetError() != null) {
+            return core(rp.field("targetError"), () -> ProgressiveSettings.targetError(r.targetError()));
+        }
+        if (r.timeBudget() != null) {
+            return core(rp.field("timeBudget"), () -> ProgressiveSettings.timeBudget(r.timeBudget()));
+        }
+        return null;
     }
 
     private Instance instance(JsonPath at, InstanceDocument d) throws SceneFileException {

@@ -271,7 +271,13 @@ public final class SceneExporter {
                 s.glossySampling().getSampleCount() == d.glossySampling().getSampleCount()
                         ? null
                         : s.glossySampling().getSampleCount(),
-                s.lightCutoff() == d.lightCutoff() ? null : s.lightCutoff());
+                s.lightCutoff() == d.lightCutoff() ? null : s.lightCutoff(),
+                c.getProgressive() == null || c.getProgressive().targetError() == 0
+                        ? null
+                        : c.getProgressive().targetError(),
+                c.getProgressive() == null || c.getProgressive().timeBudgetSeconds() == 0
+                        ? null
+                        : c.getProgressive().timeBudgetSeconds());
     }
 
     private static List<Vec3> vertices(Polygon p) {

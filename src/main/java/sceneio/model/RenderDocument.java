@@ -17,6 +17,9 @@ import renderer.sampling.SamplingPattern;
  * @param glossySamples rays per glossy reflection or frosted refraction (default 16)
  * @param lightCutoff display steps of direct light a camera sample may leave out by not sampling lights too faint
  *     to matter, 0 (exact) to 255 (default 0.5: at most one step in the 8-bit image)
+ * @param targetError sample progressively until the image's estimated RMSE is at most this many display steps
+ *     (0..255 scale); the anti-aliasing's samples become the most a pixel receives (default: fixed sampling)
+ * @param timeBudget sample progressively for this many seconds of wall time in all (default: fixed sampling)
  */
 @JsonPropertyOrder({
     "width",
@@ -28,7 +31,9 @@ import renderer.sampling.SamplingPattern;
     "shadowPattern",
     "adaptiveShadows",
     "glossySamples",
-    "lightCutoff"
+    "lightCutoff",
+    "targetError",
+    "timeBudget"
 })
 public record RenderDocument(
         Integer width,
@@ -40,7 +45,9 @@ public record RenderDocument(
         SamplingPattern shadowPattern,
         Boolean adaptiveShadows,
         Integer glossySamples,
-        Double lightCutoff) {
+        Double lightCutoff,
+        Double targetError,
+        Double timeBudget) {
 
     /**
      * This document with another image size.
@@ -60,7 +67,9 @@ public record RenderDocument(
                 shadowPattern,
                 adaptiveShadows,
                 glossySamples,
-                lightCutoff);
+                lightCutoff,
+                targetError,
+                timeBudget);
     }
 
     /**
@@ -80,7 +89,9 @@ public record RenderDocument(
                 shadowPattern,
                 adaptiveShadows,
                 glossySamples,
-                lightCutoff);
+                lightCutoff,
+                targetError,
+                timeBudget);
     }
 
     /**
@@ -100,7 +111,9 @@ public record RenderDocument(
                 shadowPattern,
                 adaptiveShadows,
                 glossySamples,
-                lightCutoff);
+                lightCutoff,
+                targetError,
+                timeBudget);
     }
 
     /**
@@ -120,7 +133,9 @@ public record RenderDocument(
                 shadowPattern,
                 adaptiveShadows,
                 glossySamples,
-                lightCutoff);
+                lightCutoff,
+                targetError,
+                timeBudget);
     }
 
     /**
@@ -140,6 +155,31 @@ public record RenderDocument(
                 shadowPattern,
                 adaptiveShadows,
                 glossySamples,
-                lightCutoff);
+                lightCutoff,
+                targetError,
+                timeBudget);
+    }
+
+    /**
+     * This document with other progressive sampling (used by command-line overrides).
+     *
+     * @param targetError the target RMSE, or null when absent
+     * @param timeBudget the time budget in seconds, or null when absent
+     * @return a copy of this document with only the target error and time budget replaced
+     */
+    public RenderDocument withProgressive(Double targetError, Double timeBudget) {
+        return new RenderDocument(
+                width,
+                height,
+                antiAliasing,
+                threads,
+                bvh,
+                maxLevel,
+                shadowPattern,
+                adaptiveShadows,
+                glossySamples,
+                lightCutoff,
+                targetError,
+                timeBudget);
     }
 }
