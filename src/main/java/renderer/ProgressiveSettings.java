@@ -59,6 +59,10 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
      * @return the settings
      */
     public static ProgressiveSettings targetError(double displaySteps) {
+        if (!(displaySteps > 0 && displaySteps <= 255)) {
+            throw new IllegalArgumentException(
+                    "target error must be in (0, 255] display steps, but was " + displaySteps);
+        }
         return new ProgressiveSettings(displaySteps, 0, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
     }
 
@@ -69,6 +73,9 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
      * @return the settings
      */
     public static ProgressiveSettings timeBudget(double seconds) {
+        if (!(seconds > 0 && seconds <= 1e7)) {
+            throw new IllegalArgumentException("time budget must be in (0, 1e7] seconds, but was " + seconds);
+        }
         return new ProgressiveSettings(0, seconds, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
     }
 

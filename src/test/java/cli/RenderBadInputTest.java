@@ -76,6 +76,14 @@ class RenderBadInputTest {
                         VALID.replace(SPHERE, "{\"type\": \"mesh\", \"file\": \"zero.obj\"}"),
                         ":6:22: $.geometries[0].file: OBJ file "),
                 Arguments.of(
+                        "target error and time budget",
+                        VALID.replace("\"height\": 4}", "\"height\": 4, \"targetError\": 1, \"timeBudget\": 2}"),
+                        ":4:57: $.render.timeBudget: give either \"targetError\" or \"timeBudget\", not both"),
+                Arguments.of(
+                        "negative target error",
+                        VALID.replace("\"height\": 4}", "\"height\": 4, \"targetError\": -1}"),
+                        ":4:39: $.render.targetError: target error must be in (0, 255] display steps"),
+                Arguments.of(
                         "no camera",
                         VALID.replaceFirst("\"camera\": \\{[^}]*},", ""),
                         ":1:1: $: the scene has" + " no camera"));
@@ -99,5 +107,27 @@ class RenderBadInputTest {
         assertEquals(1, err.toString().strip().lines().count(), "one line: " + err);
         assertArrayEquals(new byte[] {7}, Files.readAllBytes(png), "the old image is untouched");
         assertEquals("", out.toString());
+    }
+
+    @org.junit.jupiter.api.Test
+    void progressiveOptionsRenderAndPrintTheirPredictionOrAreRefused(@TempDir Path dir) throws IOException {
+        Path scene = Files.writeString(dir.resolve("scene.json"), VALID);
+        Path png = dir.resolve("out.png");
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = RaytracerCli.run(
+                new String[] {"render", scene.toString(), "-o", png.toString(), "--target-error", "2"},
+                new PrintWriter(out, true),
+                new PrintWriter(err, true));
+        assertEquals(ExitCodes.OK, code, err.toString());
+        assertTrue(out.toString().contains("progressive: target RMSE 2.00, predicted RMSE"), out.toString());
+        StringWriter err2 = new StringWriter();
+        int both = RaytracerCli.run(
+                new String[] {
+                    "render", scene.toString(), "-o", png.toString(), "--target-error", "2", "--time-budget", "3"
+                },
+                new PrintWriter(new StringWriter(), true),
+                new PrintWriter(err2, true));
+        assertEquals(ExitCodes.BAD_INPUT, both);
+        assertTrue(err2.toString().contains("give either --target-error or --time-budget, not both"), err2.toString());
     }
 }

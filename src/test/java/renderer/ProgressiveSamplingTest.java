@@ -106,7 +106,10 @@ class ProgressiveSamplingTest {
                 .contains("exactly one"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> ProgressiveSettings.targetError(-1))
                 .getMessage()
-                .contains("0 to 255"));
+                .contains("(0, 255]"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> ProgressiveSettings.timeBudget(0))
+                .getMessage()
+                .contains("(0, 1e7]"));
         assertTrue(assertThrows(
                         IllegalArgumentException.class,
                         () -> ProgressiveSettings.targetError(1).withSamples(5, 64))
