@@ -100,12 +100,33 @@ final class PixelSampler {
 
     /**
      * Sample {@code index} of half {@code half} (0 or 1) of pixel (x, y) for progressive sampling, into
-     * {@code ctx.red, green, blue}: the Halton point of that index, shifted by the half's own random offset
-     * (Cranley-Patterson rotation), so that the two halves are independent low-discrepancy estimates of the pixel.
+     * {@code ctx.red, green, blue}: the Halton point of that index over the pixel, shifted by the half's own random
+     * offset (Cranley-Patterson rotation), so that the two halves are independent low-discrepancy estimates of the
+     * pixel. With anti-aliasing of one sample, every sample goes through the pixel's centre with effect samples
+     * (shadow, lens, glossy rays) of its own.
      */
     void progressiveSample(int x, int y, int half, int index, TraceContext ctx) {
         long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
-        SampleStream shift = ctx.random.reset(SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + half));
+        long path = SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
+        long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + half);
+        ctx.sequenceIndex = index;
+        ctx.sequenceSeed = halfSeed;
+        try {
+            if (antiAliasing.getSampleCount() == 1) {
+                // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the
+                // effects.
+                sample((x - (nX - 1) / 2.0) * pixelWidth, -(y - (nY - 1) / 2.0) * pixelHeight, path, ctx);
+                return;
+            }
+            areaSample(x, y, index, halfSeed, path, ctx);
+        } finally {
+            ctx.sequenceIndex = -1;
+        }
+    }
+
+    /** The progressive sample {@code index} over the pixel's area: the half's shifted Halton point. */
+    private void areaSample(int x, int y, int index, long halfSeed, long path, TraceContext ctx) {
+        SampleStream shift = ctx.random.reset(halfSeed);
         double rx = shift.nextDouble(), ry = shift.nextDouble();
         double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + rx;
         double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + ry;
@@ -113,7 +134,7 @@ final class PixelSampler {
         if (oy >= 1) oy -= 1;
         double u = (x - (nX - 1) / 2.0 + ox - 0.5) * pixelWidth;
         double v = -(y - (nY - 1) / 2.0 + oy - 0.5) * pixelHeight;
-        sample(u, v, SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half), ctx);
+        sample(u, v, path, ctx);
     }
 
     /**
@@ -128,12 +149,14 @@ final class PixelSampler {
         }
         int count = apertureSampling.getSampleCount();
         double[] offsets = ctx.lensOffsets(count);
-        SuperSamplingBlackboard.getSampleOffsets(
-                count,
-                TargetShape.CIRCLE,
-                apertureSampling.getPattern(),
-                ctx.random.reset(SampleStream.mix(path, LENS_STREAM)),
-                offsets);
+        if (!ctx.continueSequence(LENS_STREAM, count, TargetShape.CIRCLE, offsets)) {
+            SuperSamplingBlackboard.getSampleOffsets(
+                    count,
+                    TargetShape.CIRCLE,
+                    apertureSampling.getPattern(),
+                    ctx.random.reset(SampleStream.mix(path, LENS_STREAM)),
+                    offsets);
+        }
         // The focal point of this sample: where its pinhole ray meets the focal plane.
         double scale = focalDistance / vpDistance;
         double fx = location.x + scale * (vpDistance * vTo.x + u * vRight.x + v * vUp.x);

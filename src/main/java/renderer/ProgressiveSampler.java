@@ -18,6 +18,8 @@ import java.util.Arrays;
 final class ProgressiveSampler {
     /** A pass may multiply a pixel's samples by at most this: estimates are checked again before going further. */
     private static final int GROWTH = 8;
+    /** Samples per pixel of a time budget's first pass. */
+    private static final int FIRST_BUDGET_PASS = 4;
 
     private final PixelSampler pixels;
     private final ProgressiveSettings settings;
@@ -38,7 +40,9 @@ final class ProgressiveSampler {
         sums = new double[6 * n];
         done = new int[n];
         goal = new int[n];
-        Arrays.fill(goal, settings.minSamples() / 2);
+        // A budget starts small (4 samples, the fewest that estimate an error) so that a short budget is kept; a
+        // target starts from the minimum, which keeps the estimates of flat-looking pixels from being chance zeros.
+        Arrays.fill(goal, settings.timeBudgetSeconds() > 0 ? FIRST_BUDGET_PASS / 2 : settings.minSamples() / 2);
     }
 
     /**
@@ -57,8 +61,11 @@ final class ProgressiveSampler {
             long planned;
             if (budget > 0) {
                 double left = budget - (System.nanoTime() - start) * 1e-9;
-                // A little is kept for writing the image: the last pass is planned to end just inside the budget.
-                planned = planForSamples((long) (0.95 * left / perSample));
+                if (left < 0.05 * budget) break;
+                // Half of what is left per pass, so that a wrong guess of the time per sample (pixels differ in
+                // cost) costs little; the last pass, under a fifth of the budget, takes nearly all of it.
+                double share = left > 0.2 * budget ? 0.5 : 0.9;
+                planned = planForSamples((long) (share * left / perSample));
             } else {
                 planned = planForError(settings.targetError());
             }
@@ -153,11 +160,10 @@ final class ProgressiveSampler {
      */
     long planForError(double target) {
         double[] variance = sampleVariances(errors());
-        double[] mean = new double[variance.length], weight = new double[variance.length];
+        double[] mean = new double[variance.length], weight = weights(variance);
         double mse = 0;
         for (int p = 0; p < variance.length; p++) {
             mean[p] = smoothed(variance, p, false);
-            weight[p] = Math.sqrt(smoothed(variance, p, true));
             mse += mean[p] / (2.0 * done[p]);
         }
         mse /= variance.length;
@@ -173,12 +179,27 @@ final class ProgressiveSampler {
         return setGoals(weight, hi);
     }
 
-    /** Plans the next pass to spend about {@code budget} more samples where the estimates are highest. */
+    /**
+     * Plans the next pass to spend about {@code budget} more samples: first bringing every pixel toward the minimum
+     * (evenly, as far as the budget goes), then where the estimates are highest.
+     */
     long planForSamples(long budget) {
         if (budget <= 0) return 0;
-        double[] variance = sampleVariances(errors());
-        double[] weight = new double[variance.length];
-        for (int p = 0; p < variance.length; p++) weight[p] = Math.sqrt(smoothed(variance, p, true));
+        int floor = settings.minSamples() / 2;
+        long toFloor = 0;
+        for (int d : done) toFloor += 2L * Math.max(0, floor - d);
+        if (toFloor > 0) {
+            // Not every pixel has the minimum yet: raise the lowest first, as far as the budget goes.
+            int level = floor;
+            while (level > 1 && cost(level) > budget) level--;
+            long planned = 0;
+            for (int p = 0; p < done.length; p++) {
+                goal[p] = Math.max(done[p], level);
+                planned += 2L * (goal[p] - done[p]);
+            }
+            return planned; // 0 when not even the lowest pixels can be raised in time: the render ends
+        }
+        double[] weight = weights(sampleVariances(errors()));
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
         for (int i = 0; i < 60; i++) {
@@ -187,6 +208,30 @@ final class ProgressiveSampler {
             else hi = mid;
         }
         return setGoals(weight, lo);
+    }
+
+    /** Samples that bring every pixel's halves to at least {@code level}. */
+    private long cost(int level) {
+        long sum = 0;
+        for (int d : done) sum += 2L * Math.max(0, level - d);
+        return sum;
+    }
+
+    /**
+     * Each pixel's share of new samples: the standard deviation of one sample, from the largest variance of its 3 x 3
+     * neighbourhood, plus a twentieth of the image's mean, so that no pixel is given up on for having looked flat
+     * to its first samples.
+     */
+    private double[] weights(double[] variance) {
+        double[] weight = new double[variance.length];
+        double mean = 0;
+        for (int p = 0; p < variance.length; p++) {
+            weight[p] = Math.sqrt(smoothed(variance, p, true));
+            mean += weight[p];
+        }
+        mean /= variance.length;
+        for (int p = 0; p < variance.length; p++) weight[p] += 0.05 * mean;
+        return weight;
     }
 
     private double[] errors() {

@@ -6,7 +6,9 @@ import primitives.Limits;
  * Progressive sampling: instead of a fixed count of camera rays per pixel, the renderer measures its own error and
  * spends samples where the error is highest, until the image reaches a target error or the render a time budget.
  *
- * <p>Every pixel starts with {@code minSamples} samples from two independently shifted Halton sequences (half each);
+ * <p>Every pixel starts with {@code minSamples} samples from two independently shifted Halton sequences (half each)
+ * over the pixel's area, or, when the camera's anti-aliasing has one sample, all through the pixel's centre (then the
+ * samples refine only the effects: soft shadows, depth of field, glossy surfaces);
  * the difference of the two halves' means estimates the pixel's error honestly, whatever the sampling pattern (it is
  * the error of the mean of two independent estimates, not a variance model). Between passes the samples are
  * reallocated in proportion to each pixel's estimated noise (the largest of its 3 x 3 neighbourhood, so that edges
@@ -14,7 +16,8 @@ import primitives.Limits;
  *
  * @param targetError the image RMSE to reach, in display steps (0..255 scale), or 0 for none
  * @param timeBudgetSeconds the wall time to spend on the render, or 0 for none
- * @param minSamples samples every pixel starts with: even, 4 to {@code maxSamples}
+ * @param minSamples samples every pixel starts with when a target error is asked: even, 4 to {@code maxSamples} (a time
+ *     budget starts from 4 and spends the rest where the estimates are highest)
  * @param maxSamples the most samples a pixel may receive, up to 1,048,576
  */
 public record ProgressiveSettings(double targetError, double timeBudgetSeconds, int minSamples, int maxSamples) {

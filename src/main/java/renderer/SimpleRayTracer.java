@@ -40,6 +40,8 @@ import scene.Scene;
  */
 public class SimpleRayTracer extends RayTracerBase {
     private static final long REFLECTION = 1, REFRACTION = 2, SHADOW = 3;
+    /** The stream of a progressive render's glossy beams (mixed with the level). */
+    private static final long GLOSSY_SEQUENCE = 4;
 
     private RenderSettings settings;
     private Accelerator accelerator;
@@ -352,8 +354,10 @@ public class SimpleRayTracer extends RayTracerBase {
                 seed = SampleStream.mix(seed, 1);
             }
         }
-        SuperSamplingBlackboard.getSampleOffsets(
-                count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
+        if (!ctx.continueSequence(SampleStream.mix(SHADOW, li), count, TargetShape.CIRCLE, offsets)) {
+            SuperSamplingBlackboard.getSampleOffsets(
+                    count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
+        }
         diskVisibility(sp, position, diameter, count, offsets, li, occluders, ctx);
     }
 
@@ -485,8 +489,10 @@ public class SimpleRayTracer extends RayTracerBase {
         if (maySplit) {
             count = glossy.getSampleCount();
             offsets = ctx.glossyOffsets(count);
-            SuperSamplingBlackboard.getSampleOffsets(
-                    count, TargetShape.CIRCLE, glossy.getPattern(), ctx.random.reset(path), offsets);
+            if (!ctx.continueSequence(SampleStream.mix(GLOSSY_SEQUENCE, level), count, TargetShape.CIRCLE, offsets)) {
+                SuperSamplingBlackboard.getSampleOffsets(
+                        count, TargetShape.CIRCLE, glossy.getPattern(), ctx.random.reset(path), offsets);
+            }
         } else {
             // Below the first rough bounce: one random ray in the cone, so the cost stays linear in depth. (Its own
             // buffer: the beam above this one is still reading the shared one; this one is read before recursing.)

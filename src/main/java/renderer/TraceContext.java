@@ -37,6 +37,27 @@ public final class TraceContext {
 
     /** Averages of the beams over a pixel and over the lens (each kind nests inside the one before). */
     final ColorAverage pixelAverage = new ColorAverage(), lensAverage = new ColorAverage();
+    /**
+     * In a progressive render, the index of the current sample within its pixel half (-1 otherwise) and the seed
+     * of that half: effect beams (lens, shadow, glossy) then continue one Halton sequence per pixel half, sample
+     * after sample, instead of drawing each beam afresh.
+     */
+    int sequenceIndex = -1;
+
+    long sequenceSeed;
+
+    /**
+     * Fills {@code out} with beam {@code count} of the current sample's sequence for {@code stream} (a shifted
+     * Halton continuation), or returns false outside a progressive render.
+     */
+    boolean continueSequence(long stream, int count, renderer.sampling.TargetShape shape, double[] out) {
+        if (sequenceIndex < 0) return false;
+        SampleStream shift = random.reset(SampleStream.mix(sequenceSeed, stream));
+        double rx = shift.nextDouble(), ry = shift.nextDouble();
+        renderer.sampling.SuperSamplingBlackboard.haltonContinued(
+                count, (long) sequenceIndex * count, shape, rx, ry, out);
+        return true;
+    }
 
     /** Adaptive anti-aliasing's lattice of one pixel: sampled colours, which points are sampled, averages. */
     static final class Lattice {

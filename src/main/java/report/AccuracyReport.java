@@ -176,6 +176,7 @@ public final class AccuracyReport {
     public static List<Measurement> run(Options options, java.io.PrintStream log) {
         Path folder = options.out().resolve("accuracy");
         List<Measurement> all = new ArrayList<>();
+        List<ProgressiveCheck.Row> progressive = new ArrayList<>();
         StringBuilder markdown = new StringBuilder();
         markdown.append(String.format(
                 Locale.ROOT,
@@ -245,9 +246,43 @@ public final class AccuracyReport {
                     options.out().resolve("accuracy-" + experiment.slug() + "-crops.png"),
                     Crops.grid(variants.stream().map(Variant::label).toList(), columns, crops, experiment.crop()));
             markdown.append(section(experiment, byVariant, referenceSeconds, w, h));
+            List<ProgressiveCheck.Row> checks =
+                    ProgressiveCheck.run(experiment, reference, w, h, PROGRESSIVE_TARGETS, budgets(byVariant));
+            for (ProgressiveCheck.Row r : checks) {
+                log.printf(
+                        Locale.ROOT,
+                        "  progressive %-10s: %7.3f s  predicted %7.3f  rmse %7.3f%s%n",
+                        r.asked(),
+                        r.seconds(),
+                        r.predicted(),
+                        r.measured(),
+                        r.failed() ? "  MORE THAN 25% ABOVE THE TARGET" : "");
+            }
+            markdown.append(String.format(
+                    Locale.ROOT,
+                    "%n### Asked for an error or a time (progressive sampling, HALTON, 2 samples of the effect per"
+                            + " camera sample)%n%n%s",
+                    ProgressiveCheck.table(checks)));
+            progressive.addAll(checks);
+        }
+        if (!progressive.isEmpty()) {
+            writePng(options.out().resolve("accuracy-progressive.png"), Charts.predictedVersusMeasured(progressive));
         }
         write(folder.resolve("report.md"), markdown.toString());
         return all;
+    }
+
+    /** The target RMSEs every experiment's progressive renders are asked for. */
+    static final double[] PROGRESSIVE_TARGETS = {4, 2, 1};
+
+    /**
+     * The time budgets of the progressive renders: the times of the fixed HALTON renders at the two largest counts
+     * measured, so that each budgeted render is compared with the fixed setting that took the same time.
+     */
+    private static List<Measurement> budgets(Map<String, List<Measurement>> byVariant) {
+        List<Measurement> halton = byVariant.get(Variant.HALTON.label());
+        if (halton == null || halton.size() < 2) return List.of();
+        return halton.subList(halton.size() - 2, halton.size());
     }
 
     /** A render slower than this is timed once: its time is far above the noise, and repeats would cost minutes. */

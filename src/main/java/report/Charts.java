@@ -43,6 +43,40 @@ final class Charts {
         return both;
     }
 
+    /**
+     * The error each progressive render predicted against the error measured, one series per experiment, with the
+     * line where they are equal: points below it predicted too little.
+     */
+    static BufferedImage predictedVersusMeasured(List<ProgressiveCheck.Row> rows) {
+        XYChart chart = chart(
+                "Progressive sampling: predicted vs measured RMSE",
+                "measured RMSE (of 255)",
+                "predicted RMSE (of 255)");
+        double lo = Double.POSITIVE_INFINITY, hi = 0;
+        Map<String, List<ProgressiveCheck.Row>> byExperiment = new java.util.LinkedHashMap<>();
+        for (ProgressiveCheck.Row r : rows) {
+            byExperiment
+                    .computeIfAbsent(r.experiment(), k -> new java.util.ArrayList<>())
+                    .add(r);
+            lo = Math.min(lo, Math.min(r.measured(), r.predicted()));
+            hi = Math.max(hi, Math.max(r.measured(), r.predicted()));
+        }
+        for (Map.Entry<String, List<ProgressiveCheck.Row>> e : byExperiment.entrySet()) {
+            double[] measured = e.getValue().stream()
+                    .mapToDouble(ProgressiveCheck.Row::measured)
+                    .toArray();
+            double[] predicted = e.getValue().stream()
+                    .mapToDouble(ProgressiveCheck.Row::predicted)
+                    .toArray();
+            XYSeries series = chart.addSeries(e.getKey(), measured, predicted);
+            series.setMarker(SeriesMarkers.CIRCLE);
+            series.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        }
+        XYSeries equal = chart.addSeries("predicted = measured", new double[] {lo, hi}, new double[] {lo, hi});
+        equal.setMarker(SeriesMarkers.NONE);
+        return BitmapEncoder.getBufferedImage(chart);
+    }
+
     /** The fit skips the one-sample point: every pattern puts a single sample at the centre. */
     private static double[] withoutFirst(double[] values) {
         return values.length > 1 ? java.util.Arrays.copyOfRange(values, 1, values.length) : values;

@@ -103,4 +103,17 @@ public interface Experiment {
     default String verdict(Map<String, List<Measurement>> byVariant) {
         return "";
     }
+
+    /**
+     * The camera for progressive sampling (a target error or a time budget is set on it): by default the HALTON
+     * variant with 2 samples of the effect per camera sample (2 shadow rays per light, 2 lens or glossy rays; one
+     * would be the centre of the light or lens), so that each pass refines the effect together with the pixel.
+     *
+     * @param width image width in pixels
+     * @param height image height in pixels
+     * @return a camera ready for {@link renderer.Camera#setProgressive}, not yet rendered
+     */
+    default Camera progressive(int width, int height) {
+        return camera(Variant.HALTON, 2, width, height);
+    }
 }

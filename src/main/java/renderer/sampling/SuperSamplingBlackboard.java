@@ -77,6 +77,43 @@ public final class SuperSamplingBlackboard {
     }
 
     /**
+     * Writes the Halton points {@code first + 1} to {@code first + count}, shifted by (rx, ry) modulo 1 (a
+     * Cranley-Patterson rotation), mapped to {@code shape}: consecutive calls with {@code first} advancing by
+     * {@code count} continue one low-discrepancy sequence, so that beams of a progressive render's successive samples
+     * together cover the square or disk as evenly as one long beam.
+     *
+     * @param count the number of points, at least 1
+     * @param first how many points of the sequence come before these, at least 0
+     * @param shape the square {@code [-1/2, 1/2]^2} or the disk of diameter 1
+     * @param rx the shift along x, in [0, 1)
+     * @param ry the shift along y, in [0, 1)
+     * @param out the array receiving x, y pairs in its first {@code 2 * count} elements
+     */
+    public static void haltonContinued(int count, long first, TargetShape shape, double rx, double ry, double[] out) {
+        for (int i = 0; i < count; i++) {
+            long index = first + i + 1;
+            double u = wrap((Long.reverse(index) >>> 11) * 0x1.0p-53 + rx);
+            double v = wrap(radicalInverse3(index) + ry);
+            if (shape == TargetShape.CIRCLE) {
+                concentricDisk(u, v, out, 2 * i);
+            } else {
+                out[2 * i] = u - 0.5;
+                out[2 * i + 1] = v - 0.5;
+            }
+        }
+    }
+
+    private static double radicalInverse3(long i) {
+        double result = 0, factor = 1.0 / 3;
+        while (i > 0) {
+            result += (i % 3) * factor;
+            i /= 3;
+            factor /= 3;
+        }
+        return result;
+    }
+
+    /**
      * Probe points for adaptive sampling of a disk of diameter 1: the centre and {@code count - 1} points evenly
      * spaced on the rim, rotated by a random angle. A straight edge crossing the disk separates two of them unless
      * it cuts off less than the circular segment between neighbouring rim points.
