@@ -4,15 +4,11 @@ import geometries.Cylinder;
 import geometries.Geometries;
 import geometries.Geometry;
 import geometries.Intersectable;
-import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.Tube;
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -25,15 +21,13 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
-import obj.ObjFormatException;
-import obj.ObjMesh;
-import obj.ObjReader;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Limits;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Texture;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
@@ -65,6 +59,7 @@ import sceneio.model.SceneDocument;
 import sceneio.model.SphereDocument;
 import sceneio.model.SpotLightDocument;
 import sceneio.model.SurfaceDocument;
+import sceneio.model.TextureDocument;
 import sceneio.model.TriangleDocument;
 import sceneio.model.TubeDocument;
 import sceneio.model.Vec3;
@@ -86,6 +81,10 @@ final class SceneBuilder {
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
     private final Map<String, Material> materials = new HashMap<>();
+    /** Each image file of the scene decoded once. */
+    private final TextureLoader textures;
+    /** Reads the OBJ meshes with their MTL files and textures. */
+    private final MeshLoader meshes;
 
     /**
      * @param file the scene file's name for messages
@@ -97,6 +96,23 @@ final class SceneBuilder {
         this.file = file;
         this.text = text;
         this.confinement = new FileConfinement(baseDir, alsoAllowed);
+        this.textures = new TextureLoader(confinement);
+        this.meshes = new MeshLoader(file, confinement, textures, warnings, new MeshLoader.Context() {
+            @Override
+            public SceneFileException fail(JsonPath at, String problem, Throwable cause) {
+                return SceneBuilder.this.fail(at, problem, cause);
+            }
+
+            @Override
+            public Material material(JsonPath at, MaterialRef ref) throws SceneFileException {
+                return SceneBuilder.this.material(at, ref);
+            }
+
+            @Override
+            public Color color(JsonPath at, Vec3 value) throws SceneFileException {
+                return SceneBuilder.this.color(at, value);
+            }
+        });
     }
 
     LoadedScene build(SceneDocument d, String defaultName) throws SceneFileException {
@@ -317,7 +333,17 @@ final class SceneBuilder {
             core(at.field("indexOfRefraction"), () -> material.setIndexOfRefraction(m.indexOfRefraction()));
         }
         if (m.roughness() != null) core(at.field("roughness"), () -> material.setRoughness(m.roughness()));
+        if (m.kDMap() != null) material.setKdMap(texture(at.field("kDMap"), m.kDMap()));
         return material;
+    }
+
+    private Texture texture(JsonPath at, TextureDocument t) throws SceneFileException {
+        String name = required(at, "file", t.file());
+        try {
+            return textures.load(name, meshes.displayName(name), t.wrap() == null ? Texture.Wrap.REPEAT : t.wrap());
+        } catch (TextureLoader.TextureException e) {
+            throw fail(at.field("file"), e.getMessage(), e);
+        }
     }
 
     /** A coefficient, checked here because the core's range message would quote Double.MAX_VALUE. */
@@ -342,6 +368,7 @@ final class SceneBuilder {
         if (g instanceof GroupDocument group) {
             return group(at.field("geometries"), required(at, "geometries", group.geometries()));
         }
+        if (g instanceof MeshDocument mesh) return meshes.load(at, mesh);
         Geometry geometry = core(at, () -> shape(at, g));
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
@@ -397,50 +424,13 @@ final class SceneBuilder {
             Ray axis = axis(at.field("axis"), required(at, "axis", t.axis()));
             return core(at.field("radius"), () -> new Tube(radius, axis));
         }
-        return mesh(at, (MeshDocument) g);
+        throw new IllegalStateException("meshes are loaded by MeshLoader");
     }
 
     private Ray axis(JsonPath at, AxisDocument a) throws SceneFileException {
         Point origin = point(at.field("origin"), required(at, "origin", a.origin()));
         Vector direction = vector(at.field("direction"), required(at, "direction", a.direction()));
         return new Ray(origin, direction);
-    }
-
-    private Mesh mesh(JsonPath at, MeshDocument m) throws SceneFileException {
-        JsonPath fileAt = at.field("file");
-        String name = required(at, "file", m.file());
-        // Resolved inside the allowed folders before anything is looked at (FileConfinement).
-        Path path = core(fileAt, () -> confinement.resolve("OBJ file", name));
-        if (!Files.exists(path, LinkOption.NOFOLLOW_LINKS)) {
-            throw fail(fileAt, "OBJ file \"" + name + "\" not found (looked for " + path + ")");
-        }
-        ObjMesh obj;
-        try {
-            obj = ObjReader.read(path, displayName(name));
-        } catch (ObjFormatException e) {
-            throw fail(fileAt, "OBJ file " + e.getMessage(), e);
-        }
-        warnings.addAll(obj.warnings());
-        double scale = m.scale() == null ? 1 : m.scale();
-        if (!(scale > 0)) throw fail(at.field("scale"), "scale must be positive, but was " + scale);
-        Vec3 t = m.translate() == null ? new Vec3(0, 0, 0) : m.translate();
-        double[] v = obj.vertices().clone();
-        for (int i = 0; i < v.length; i += 3) {
-            v[i] = v[i] * scale + t.x();
-            v[i + 1] = v[i + 1] * scale + t.y();
-            v[i + 2] = v[i + 2] * scale + t.z();
-        }
-        boolean smooth = m.smooth() == null || m.smooth();
-        return core(at, () -> new Mesh(v, obj.indices(), smooth ? obj.normals() : null));
-    }
-
-    /** An OBJ path as the user sees it: beside the scene file's name (e.g. scenes/models/cube.obj). */
-    private String displayName(String objPath) {
-        try {
-            return Path.of(file).resolveSibling(objPath).normalize().toString();
-        } catch (InvalidPathException e) {
-            return objPath;
-        }
     }
 
     // ------------------------------------------------------------------ values

@@ -143,13 +143,18 @@ public final class SceneExporter {
             String file = "models/" + prefix + "/mesh-" + meshes++ + ".obj";
             ObjWriter.write(
                     m, folder.resolve(file), "mesh of scene " + prefix + " (" + m.triangleCount() + " triangles)");
-            return new MeshDocument(file, null, null, m.getNormals() != null ? null : false, material, emission);
+            return new MeshDocument(file, null, null, m.getNormals() != null ? null : false, material, emission, null);
         }
         throw new IllegalArgumentException("a " + g.getClass().getName() + " cannot be written to a scene file");
     }
 
     /** A material used more than once becomes a named one; a material used once is written in place. */
     private MaterialRef material(Material m) {
+        if (m.getKdMap() != null) {
+            // The texels are in memory only: there is no image file to refer to.
+            throw new IllegalArgumentException("a material with a kD map (texture) cannot be written to a scene file:"
+                    + " reference the image from the scene file or an MTL file instead");
+        }
         MaterialDocument d = new MaterialDocument(
                 coefficient(m.getKa(), Double3.ONE),
                 coefficient(m.getKd(), null),
@@ -158,7 +163,8 @@ public final class SceneExporter {
                 coefficient(m.getKr(), null),
                 coefficient(m.getKt(), null),
                 m.getIndexOfRefraction() == 1 ? null : m.getIndexOfRefraction(),
-                m.getRoughness() == 0 ? null : m.getRoughness());
+                m.getRoughness() == 0 ? null : m.getRoughness(),
+                null);
         if (uses.getOrDefault(m, 0) < 2) return MaterialRef.of(d);
         String name = materialNames.computeIfAbsent(m, k -> "material-" + (materials.size() + 1));
         materials.putIfAbsent(name, d);
