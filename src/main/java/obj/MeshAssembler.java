@@ -55,14 +55,16 @@ final class MeshAssembler {
                 corners[k++] = 3 * t + 1;
                 corners[k++] = 3 * t + 2;
             }
-            boolean allNormals = true, allTexCoords = true;
+            boolean allNormals = true, allTexCoords = true, anyTexCoords = false;
             for (int c : corners) {
                 int n = cornerNormals.get(c);
                 allNormals &= n >= 0 && !normals.isZero(n);
                 allTexCoords &= cornerTexCoords.get(c) >= 0;
+                anyTexCoords |= cornerTexCoords.get(c) >= 0;
             }
             droppedNormals |= !allNormals && normals.size() > 0;
-            droppedTexCoords |= !allTexCoords && texCoords.size() > 0;
+            // A part without any texture coordinates is untextured, not damaged: no warning.
+            droppedTexCoords |= !allTexCoords && anyTexCoords;
             parts.add(part(corners, allNormals, allTexCoords, materials.get(m), materials.size() == 1));
         }
         if (droppedNormals) {
