@@ -55,15 +55,16 @@ final class MeshAssembler {
                 corners[k++] = 3 * t + 1;
                 corners[k++] = 3 * t + 2;
             }
-            boolean allNormals = true, allTexCoords = true, anyTexCoords = false;
+            boolean allNormals = true, anyNormals = false, allTexCoords = true, anyTexCoords = false;
             for (int c : corners) {
                 int n = cornerNormals.get(c);
                 allNormals &= n >= 0 && !normals.isZero(n);
+                anyNormals |= n >= 0;
                 allTexCoords &= cornerTexCoords.get(c) >= 0;
                 anyTexCoords |= cornerTexCoords.get(c) >= 0;
             }
-            droppedNormals |= !allNormals && normals.size() > 0;
-            // A part without any texture coordinates is untextured, not damaged: no warning.
+            // A part without any normals (texture coordinates) is flat (untextured) by design: no warning.
+            droppedNormals |= !allNormals && anyNormals;
             droppedTexCoords |= !allTexCoords && anyTexCoords;
             parts.add(part(corners, allNormals, allTexCoords, materials.get(m), materials.size() == 1));
         }

@@ -36,8 +36,8 @@ final class TextureLoader {
     static final int BYTES_PER_TEXEL = 20;
 
     private final FileConfinement confinement;
-    /** Decoded textures by real path (with the repeat wrap; other wraps share the texels). */
-    private final Map<Path, Texture> loaded = new HashMap<>();
+    /** Decoded textures by real path, one per wrap mode used (sharing the texels). */
+    private final Map<Path, Texture[]> loaded = new HashMap<>();
 
     TextureLoader(FileConfinement confinement) {
         this.confinement = confinement;
@@ -62,12 +62,21 @@ final class TextureLoader {
         } catch (IllegalArgumentException e) {
             throw new TextureException(e.getMessage(), e);
         }
-        Texture texture = loaded.get(path);
-        if (texture == null) {
-            texture = decode(path, quoted);
-            loaded.put(path, texture);
+        Texture[] wraps = loaded.get(path);
+        if (wraps == null) {
+            Texture decoded = decode(path, quoted);
+            wraps = new Texture[Texture.Wrap.values().length];
+            wraps[decoded.getWrap().ordinal()] = decoded;
+            loaded.put(path, wraps);
         }
-        return texture.withWrap(wrap);
+        Texture texture = wraps[wrap.ordinal()];
+        if (texture == null) {
+            texture = wraps[Texture.Wrap.REPEAT.ordinal()];
+            for (Texture t : wraps) texture = t != null ? t : texture;
+            texture = texture.withWrap(wrap);
+            wraps[wrap.ordinal()] = texture;
+        }
+        return texture;
     }
 
     private static Texture decode(Path path, String quoted) throws TextureException {
