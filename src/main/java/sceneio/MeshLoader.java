@@ -49,6 +49,9 @@ final class MeshLoader {
     private final FileConfinement confinement;
     private final TextureLoader textures;
     private final List<String> warnings;
+    /** Receives the reference of each OBJ and MTL file read (once each). */
+    private final List<String> files;
+
     private final Context context;
     /** MTL files read, by real path. */
     private final Map<Path, MtlLibrary> libraries = new HashMap<>();
@@ -62,11 +65,13 @@ final class MeshLoader {
             FileConfinement confinement,
             TextureLoader textures,
             List<String> warnings,
+            List<String> files,
             Context context) {
         this.sceneFile = sceneFile;
         this.confinement = confinement;
         this.textures = textures;
         this.warnings = warnings;
+        this.files = files;
         this.context = context;
     }
 
@@ -93,6 +98,7 @@ final class MeshLoader {
             throw context.fail(fileAt, "OBJ file " + e.getMessage(), e);
         }
         warnings.addAll(model.warnings());
+        if (!files.contains(name)) files.add(name);
         double scale = m.scale() == null ? 1 : m.scale();
         if (!(scale > 0)) throw context.fail(at.field("scale"), "scale must be positive, but was " + scale, null);
         Vec3 t = m.translate() == null ? new Vec3(0, 0, 0) : m.translate();
@@ -207,6 +213,7 @@ final class MeshLoader {
                     throw context.fail(fileAt, where + "MTL file " + e.getMessage(), e);
                 }
                 libraries.put(path, read);
+                files.add(reference);
                 warnings.addAll(read.warnings());
                 for (MtlMaterial material : read.materials().values()) references.put(material, reference);
             }

@@ -80,6 +80,9 @@ final class SceneBuilder {
 
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
+    /** The files read besides the scene file, relative to its folder, each once. */
+    private final List<String> files = new ArrayList<>();
+
     private final Map<String, Material> materials = new HashMap<>();
     /** Each image file of the scene decoded once. */
     private final TextureLoader textures;
@@ -96,8 +99,8 @@ final class SceneBuilder {
         this.file = file;
         this.text = text;
         this.confinement = new FileConfinement(baseDir, alsoAllowed);
-        this.textures = new TextureLoader(confinement);
-        this.meshes = new MeshLoader(file, confinement, textures, warnings, new MeshLoader.Context() {
+        this.textures = new TextureLoader(confinement, files);
+        this.meshes = new MeshLoader(file, confinement, textures, warnings, files, new MeshLoader.Context() {
             @Override
             public SceneFileException fail(JsonPath at, String problem, Throwable cause) {
                 return SceneBuilder.this.fail(at, problem, cause);
@@ -143,7 +146,7 @@ final class SceneBuilder {
             scene.setGeometries(all);
         }
         Camera camera = camera(d, scene);
-        return new LoadedScene(d, scene, camera, warnings);
+        return new LoadedScene(d, scene, camera, warnings, files);
     }
 
     // ------------------------------------------------------------------ camera and render settings

@@ -9,6 +9,7 @@ import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Iterator;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import javax.imageio.ImageIO;
@@ -36,11 +37,14 @@ final class TextureLoader {
     static final int BYTES_PER_TEXEL = 20;
 
     private final FileConfinement confinement;
+    /** Receives the reference of each image file read. */
+    private final List<String> files;
     /** Decoded textures by real path, one per wrap mode used (sharing the texels). */
     private final Map<Path, Texture[]> loaded = new HashMap<>();
 
-    TextureLoader(FileConfinement confinement) {
+    TextureLoader(FileConfinement confinement, List<String> files) {
         this.confinement = confinement;
+        this.files = files;
     }
 
     /** A texture that cannot be loaded: the message says which file and why. */
@@ -68,6 +72,7 @@ final class TextureLoader {
             wraps = new Texture[Texture.Wrap.values().length];
             wraps[decoded.getWrap().ordinal()] = decoded;
             loaded.put(path, wraps);
+            files.add(reference);
         }
         Texture texture = wraps[wrap.ordinal()];
         if (texture == null) {

@@ -48,7 +48,8 @@ class TextureBadInputTest {
         Files.delete(models.resolve("board.mtl"));
         SceneFileException e = error("", "");
         assertEquals("$.geometries[0].file", e.getJsonPath());
-        assertMessage(e, "OBJ file " + dir.resolve("models/board.obj") + ":1: mtllib: MTL file \"board.mtl\" not found");
+        assertMessage(
+                e, "OBJ file " + dir.resolve("models/board.obj") + ":1: mtllib: MTL file \"board.mtl\" not found");
         e = errorWithMtl(TexturedSceneTest.MTL.replace("Kd 1 0 0", "Kd 1 0"));
         assertMessage(e, "board.obj:1: mtllib: MTL file ", "board.mtl:3: 'Kd' needs r g b");
     }

@@ -161,6 +161,15 @@ class TexturedSceneTest {
     void theShowcaseSceneLoadsWithoutWarnings() throws Exception {
         LoadedScene loaded = SceneLoader.load(Path.of("scenes/textured-model.json"));
         assertTrue(loaded.warnings().isEmpty(), loaded.warnings().toString());
+        // What must travel with the scene file (the Spark bundle ships these), each once.
+        assertEquals(
+                java.util.List.of(
+                        "models/crate/crate.obj",
+                        "models/crate/crate.mtl",
+                        "models/crate/planks.png",
+                        "models/crate/tiles.png",
+                        "models/crate/floor.obj"),
+                loaded.files());
         Camera camera = loaded.camera();
         assertEquals(480, camera.getNx());
     }
