@@ -133,14 +133,16 @@ final class MeshLoader {
                     }
                     material = material(fileAt, found);
                     if (glow == null) glow = found.emission();
-                    if (found.mapKd() != null && part.texCoords() == null) {
-                        warnings.add(objName + ": material \"" + Printable.of(partName) + "\" has a texture (map_Kd),"
-                                + " but its faces have no texture coordinates (vt): it shows one texel");
-                    }
                 }
             }
             Material chosen = material;
             Color chosenGlow = glow;
+            if (chosen != null && chosen.getKdMap() != null && part.texCoords() == null) {
+                warnings.add(objName + ": the faces of "
+                        + (partName == null ? "no material" : "material \"" + Printable.of(partName) + "\"")
+                        + " have a textured material (kDMap, map_Kd) but no texture"
+                        + " coordinates (vt): the texture shows one colour");
+            }
             double[] v = part.vertices().clone();
             for (int i = 0; i < v.length; i += 3) {
                 v[i] = v[i] * scale + t.x();

@@ -376,6 +376,12 @@ final class SceneBuilder {
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
+        if (geometry.getMaterial().getKdMap() != null) {
+            warnings.add(file + ": " + at + ": a "
+                    + g.getClass().getSimpleName().replace("Document", "").toLowerCase(java.util.Locale.ROOT)
+                    + " has no texture coordinates (only OBJ meshes with vt have them): its"
+                    + " texture (kDMap) shows one colour");
+        }
         return geometry;
     }
 

@@ -136,7 +136,39 @@ class TexturedSceneTest {
         ImageWriter image = loaded.camera().renderImage().getImage();
         // The left quad has no texture coordinates: it shows the texel at (0, 0), white, times kD 0.5.
         assertColor(new Color(127.5, 127.5, 127.5), image.getPixel(5, 10), "untextured mesh, textured material");
-        assertTrue(loaded.warnings().isEmpty(), loaded.warnings().toString());
+        assertTrue(
+                loaded.warnings()
+                        .get(0)
+                        .endsWith("board.obj: the faces of material \"red\" have a textured material"
+                                + " (kDMap, map_Kd) but no texture coordinates (vt): the texture shows one colour"),
+                loaded.warnings().toString());
+        assertEquals(1, loaded.warnings().size(), loaded.warnings().toString());
+    }
+
+    @Test
+    void aTexturedSphereIsWarnedAbout(@TempDir Path dir) throws Exception {
+        String json = """
+                {"camera": {"location": [0, 0, 10], "lookAt": [0, 0, 0], "up": [0, 1, 0], "vpDistance": 10,
+                            "vpWidth": 4, "vpHeight": 2},
+                 "render": {"width": 4, "height": 2},
+                 "geometries": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                                 "material": {"kDMap": {"file": "models/tex.png"}}}]}
+                """;
+        writeModel(dir);
+        Path file = Files.writeString(dir.resolve("sphere.json"), json);
+        assertEquals(
+                java.util.List.of(file + ": $.geometries[0]: a sphere has no texture coordinates (only OBJ meshes with"
+                        + " vt have them): its texture (kDMap) shows one colour"),
+                SceneLoader.load(file).warnings());
+    }
+
+    @Test
+    void materialsWithTexturesAndOverridesRoundTrip() throws Exception {
+        sceneio.model.SceneDocument d = SceneLoader.read(Path.of("scenes/textured-model.json"));
+        assertEquals(d, SceneLoader.parse(SceneWriter.toJson(d), "again.json"));
+        String json = SceneWriter.toJson(d);
+        assertTrue(json.contains("\"kDMap\""), json);
+        assertTrue(json.contains("\"wrap\" : \"mirror\"") || json.contains("\"wrap\":\"mirror\""), json);
     }
 
     @Test
