@@ -113,14 +113,14 @@ public class SimpleRayTracer extends RayTracerBase {
     private void trace(
             Ray ray, TraceContext ctx, long path, int level, double kr, double kg, double kb, boolean maySplit) {
         HitRecord hit = ctx.hit.reset();
-        if (!accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) {
-            ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
-            return;
-        }
         // Only textured meshes set texture coordinates: zeroed here, a texture elsewhere reads a fixed texel
         // rather than the previous ray's (which would make images depend on the ray order).
         hit.texU = 0;
         hit.texV = 0;
+        if (!accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) {
+            ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
+            return;
+        }
         hit.geometry.completeHit(ray, hit);
         SurfacePoint sp = ctx.surface(level).set(hit);
         shade(sp, ray.dx(), ray.dy(), ray.dz(), ctx, path, level, kr, kg, kb, maySplit);

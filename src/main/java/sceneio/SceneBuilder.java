@@ -80,10 +80,10 @@ final class SceneBuilder {
 
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
-    /** The files read besides the scene file, relative to its folder, each once. */
-    private final List<String> files = new ArrayList<>();
 
     private final Map<String, Material> materials = new HashMap<>();
+    /** The files read besides the scene file, relative to its folder, each once. */
+    private final List<String> files = new ArrayList<>();
     /** Each image file of the scene decoded once. */
     private final TextureLoader textures;
     /** Reads the OBJ meshes with their MTL files and textures. */
@@ -368,10 +368,10 @@ final class SceneBuilder {
 
     private Intersectable geometry(JsonPath at, GeometryDocument g) throws SceneFileException {
         if (g == null) throw fail(at, "null is not a geometry: give an object with a \"type\"");
+        if (g instanceof MeshDocument mesh) return meshes.load(at, mesh);
         if (g instanceof GroupDocument group) {
             return group(at.field("geometries"), required(at, "geometries", group.geometries()));
         }
-        if (g instanceof MeshDocument mesh) return meshes.load(at, mesh);
         Geometry geometry = core(at, () -> shape(at, g));
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));

@@ -143,7 +143,7 @@ public final class SceneExporter {
             String file = "models/" + prefix + "/mesh-" + meshes++ + ".obj";
             ObjWriter.write(
                     m, folder.resolve(file), "mesh of scene " + prefix + " (" + m.triangleCount() + " triangles)");
-            return new MeshDocument(file, null, null, m.getNormals() != null ? null : false, material, emission, null);
+            return new MeshDocument(file, null, null, m.getNormals() != null ? null : false, material, emission);
         }
         throw new IllegalArgumentException("a " + g.getClass().getName() + " cannot be written to a scene file");
     }
@@ -163,8 +163,7 @@ public final class SceneExporter {
                 coefficient(m.getKr(), null),
                 coefficient(m.getKt(), null),
                 m.getIndexOfRefraction() == 1 ? null : m.getIndexOfRefraction(),
-                m.getRoughness() == 0 ? null : m.getRoughness(),
-                null);
+                m.getRoughness() == 0 ? null : m.getRoughness());
         if (uses.getOrDefault(m, 0) < 2) return MaterialRef.of(d);
         String name = materialNames.computeIfAbsent(m, k -> "material-" + (materials.size() + 1));
         materials.putIfAbsent(name, d);

@@ -85,15 +85,14 @@ class SceneRoundTripTest {
                         null,
                         null,
                         0.25),
-                Map.of("m", new MaterialDocument(Coefficient.of(awkward), null, null, 3, null, null, null, null, null)),
+                Map.of("m", new MaterialDocument(Coefficient.of(awkward), null, null, 3, null, null, null, null)),
                 List.of(),
                 List.of(
                         new SphereDocument(new Vec3(1, 2, 3), awkward, MaterialRef.named("m"), null),
                         new SphereDocument(
                                 new Vec3(1, 2, 3),
                                 1.0,
-                                MaterialRef.of(
-                                        new MaterialDocument(null, null, null, null, null, null, 1.5, null, null)),
+                                MaterialRef.of(new MaterialDocument(null, null, null, null, null, null, 1.5, null)),
                                 new Vec3(4, 5, 6))));
         String json = SceneWriter.toJson(d);
         assertEquals(d, SceneLoader.parse(json, "java.json"));

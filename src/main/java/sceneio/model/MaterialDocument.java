@@ -26,4 +26,28 @@ public record MaterialDocument(
         Coefficient kT,
         Double indexOfRefraction,
         Double roughness,
-        TextureDocument kDMap) {}
+        TextureDocument kDMap) {
+    /**
+     * A material without a texture.
+     *
+     * @param kA ambient
+     * @param kD diffuse
+     * @param kS specular
+     * @param shininess specular exponent, an integer >= 0
+     * @param kR mirror reflection
+     * @param kT transparency
+     * @param indexOfRefraction 0.001 to 1000
+     * @param roughness 0 (ideal mirror and clear glass) to 1
+     */
+    public MaterialDocument(
+            Coefficient kA,
+            Coefficient kD,
+            Coefficient kS,
+            Integer shininess,
+            Coefficient kR,
+            Coefficient kT,
+            Double indexOfRefraction,
+            Double roughness) {
+        this(kA, kD, kS, shininess, kR, kT, indexOfRefraction, roughness, null);
+    }
+}
