@@ -27,7 +27,6 @@ import primitives.Limits;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Texture;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
@@ -77,17 +76,16 @@ final class SceneBuilder {
     private final String file;
     /** Where referenced files may be: the scene's folder tree and what the user allowed. */
     private final FileConfinement confinement;
-
-    private final Supplier<String> text;
-    private final List<String> warnings = new ArrayList<>();
-
-    private final Map<String, Material> materials = new HashMap<>();
     /** The files read besides the scene file, relative to its folder, each once. */
     private final List<String> files = new ArrayList<>();
     /** Each image file of the scene decoded once. */
     private final TextureLoader textures;
     /** Reads the OBJ meshes with their MTL files and textures. */
     private final MeshLoader meshes;
+
+    private final Supplier<String> text;
+    private final List<String> warnings = new ArrayList<>();
+    private final Map<String, Material> materials = new HashMap<>();
 
     /**
      * @param file the scene file's name for messages
@@ -340,10 +338,11 @@ final class SceneBuilder {
         return material;
     }
 
-    private Texture texture(JsonPath at, TextureDocument t) throws SceneFileException {
+    private primitives.Texture texture(JsonPath at, TextureDocument t) throws SceneFileException {
         String name = required(at, "file", t.file());
         try {
-            return textures.load(name, meshes.displayName(name), t.wrap() == null ? Texture.Wrap.REPEAT : t.wrap());
+            return textures.load(
+                    name, meshes.displayName(name), t.wrap() == null ? primitives.Texture.Wrap.REPEAT : t.wrap());
         } catch (TextureLoader.TextureException e) {
             throw fail(at.field("file"), e.getMessage(), e);
         }
