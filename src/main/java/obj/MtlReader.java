@@ -1,6 +1,5 @@
 package obj;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -71,7 +70,6 @@ public final class MtlReader {
     private final Map<String, int[]> skipped = new LinkedHashMap<>();
     private final List<String> notes = new ArrayList<>();
     private int lineNumber;
-    private long characters;
     private boolean sawStatement;
     /** The material being read; its fields are written into a record when the next begins or the file ends. */
     private String name;
@@ -131,37 +129,15 @@ public final class MtlReader {
     public static MtlLibrary read(String name, Reader text) throws ObjFormatException {
         MtlReader reader = new MtlReader(name);
         try {
-            BufferedReader lines = new BufferedReader(text);
-            StringBuilder line = new StringBuilder();
-            while (reader.readLine(lines, line)) reader.parseLine(line.toString());
+            BoundedLines lines = new BoundedLines(text, reader.file, "MTL", MAX_LINE_LENGTH, MAX_CHARACTERS);
+            for (String line = lines.next(false); line != null; line = lines.next(reader.sawStatement)) {
+                reader.lineNumber = lines.number();
+                reader.parseLine(line);
+            }
         } catch (IOException e) {
             throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
         }
         return reader.finish();
-    }
-
-    /** The next line into {@code line}, bounded like OBJ lines; false at the end of the text. */
-    private boolean readLine(BufferedReader in, StringBuilder line) throws IOException, ObjFormatException {
-        line.setLength(0);
-        int c = in.read();
-        if (c < 0) return false;
-        lineNumber++;
-        while (c >= 0 && c != '\n') {
-            if (++characters > MAX_CHARACTERS) {
-                throw error("the file is longer than " + MAX_CHARACTERS + " characters, the most an MTL file may"
-                        + " have here");
-            }
-            if (c != '\r') line.append((char) c);
-            if (line.length() > MAX_LINE_LENGTH) {
-                throw error(
-                        sawStatement
-                                ? "line longer than " + MAX_LINE_LENGTH + " characters"
-                                : "line longer than " + MAX_LINE_LENGTH
-                                        + " characters before any MTL statement: this is not an MTL file");
-            }
-            c = in.read();
-        }
-        return true;
     }
 
     private void parseLine(String raw) throws ObjFormatException {

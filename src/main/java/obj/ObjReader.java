@@ -1,6 +1,5 @@
 package obj;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -172,42 +171,16 @@ public final class ObjReader {
         ObjReader reader = new ObjReader(name, heap);
         reader.byMaterial = byMaterial;
         try {
-            BufferedReader lines = new BufferedReader(text);
-            StringBuilder line = new StringBuilder();
-            while (readLine(lines, line, reader)) reader.parseLine(line.toString());
+            // Bounded lines: a file without line breaks, or an endless one, is an error, not an out-of-memory crash.
+            BoundedLines lines = new BoundedLines(text, reader.file, "OBJ", MAX_LINE_LENGTH, MAX_CHARACTERS);
+            for (String line = lines.next(false); line != null; line = lines.next(reader.sawStatement)) {
+                reader.lineNumber = lines.number();
+                reader.parseLine(line);
+            }
         } catch (IOException e) {
             throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
         }
         return reader.finish();
-    }
-
-    /**
-     * Reads the next line into {@code line} (without its terminator) and counts it; false at the end of the text.
-     * Lines are bounded ({@link #MAX_LINE_LENGTH}) and so is the whole text ({@link #MAX_CHARACTERS}): a file
-     * without line breaks, or an endless one, is an error, not an out-of-memory crash.
-     */
-    private static boolean readLine(BufferedReader in, StringBuilder line, ObjReader reader)
-            throws IOException, ObjFormatException {
-        line.setLength(0);
-        int c = in.read();
-        if (c < 0) return false;
-        reader.lineNumber++;
-        while (c >= 0 && c != '\n') {
-            if (++reader.characters > MAX_CHARACTERS) {
-                throw reader.error("the file is longer than " + MAX_CHARACTERS + " characters, the most an OBJ"
-                        + " file may have here");
-            }
-            if (c != '\r') line.append((char) c);
-            if (line.length() > MAX_LINE_LENGTH) {
-                throw reader.error(
-                        reader.sawStatement
-                                ? "line longer than " + MAX_LINE_LENGTH + " characters"
-                                : "line longer than " + MAX_LINE_LENGTH
-                                        + " characters before any OBJ statement: this is not an OBJ file");
-            }
-            c = in.read();
-        }
-        return true;
     }
 
     /**
@@ -241,8 +214,6 @@ public final class ObjReader {
     /** Elements (coordinates and corners) read between two checks of the size against the heap. */
     private static final int CHECK_EVERY = 1 << 16;
 
-    /** Characters read so far. */
-    private long characters;
     /** Reports the heap the JVM can give (garbage counted as used until collected). */
     private final LongSupplier heap;
     /** The heap when reading began: what the mesh may need. */
