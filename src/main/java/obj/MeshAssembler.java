@@ -41,16 +41,22 @@ final class MeshAssembler {
 
     /** One mesh per material in order of first use; warnings about dropped normals or texture coordinates added. */
     List<ObjMesh> parts(List<String> warnings) {
-        int triangles = triangleMaterials.size();
-        int[] counts = new int[materials.size()];
-        for (int t = 0; t < triangles; t++) counts[triangleMaterials.get(t)]++;
+        int triangles = triangleMaterials.size(), count = materials.size();
+        // The triangles grouped by material in one pass (a counting sort): a file switching materials often must
+        // not cost materials x triangles.
+        int[] start = new int[count + 1];
+        for (int t = 0; t < triangles; t++) start[triangleMaterials.get(t) + 1]++;
+        for (int m = 0; m < count; m++) start[m + 1] += start[m];
+        int[] order = new int[triangles];
+        int[] next = Arrays.copyOf(start, count);
+        for (int t = 0; t < triangles; t++) order[next[triangleMaterials.get(t)]++] = t;
         List<ObjMesh> parts = new ArrayList<>();
         boolean droppedNormals = false, droppedTexCoords = false;
-        for (int m = 0; m < materials.size(); m++) {
-            int[] corners = new int[3 * counts[m]];
+        for (int m = 0; m < count; m++) {
+            int[] corners = new int[3 * (start[m + 1] - start[m])];
             int k = 0;
-            for (int t = 0; t < triangles; t++) {
-                if (triangleMaterials.get(t) != m) continue;
+            for (int i = start[m]; i < start[m + 1]; i++) {
+                int t = order[i];
                 corners[k++] = 3 * t;
                 corners[k++] = 3 * t + 1;
                 corners[k++] = 3 * t + 2;

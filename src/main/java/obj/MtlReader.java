@@ -27,6 +27,8 @@ import primitives.Double3;
 public final class MtlReader {
     /** Longest line read (characters), as for OBJ files. */
     public static final int MAX_LINE_LENGTH = ObjReader.MAX_LINE_LENGTH;
+    /** Most materials in one MTL file, as many as one OBJ file may use. */
+    public static final int MAX_MATERIALS = ObjReader.MAX_MATERIALS;
     /** Longest MTL text read (characters): 16 MiB, far more than the largest material libraries. */
     public static final long MAX_CHARACTERS = 1 << 24;
 
@@ -175,6 +177,9 @@ public final class MtlReader {
     private void newMaterial(String materialName) throws ObjFormatException {
         if (materialName.isEmpty()) throw error("'newmtl' needs a material name");
         store();
+        if (materials.size() >= MAX_MATERIALS && !materials.containsKey(materialName)) {
+            throw error("more than " + MAX_MATERIALS + " materials, the most an MTL file may have here");
+        }
         if (materials.containsKey(materialName)) {
             note("material \"" + abbreviate(materialName) + "\" is defined again at line " + lineNumber
                     + "; the later definition is used");

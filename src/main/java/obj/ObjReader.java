@@ -197,6 +197,8 @@ public final class ObjReader {
 
     /** Longest line read (characters): OBJ lines are short, a face of a thousand corners fits. */
     public static final int MAX_LINE_LENGTH = 1 << 16;
+    /** Most materials ({@code usemtl} names that faces use) in one OBJ file; each becomes a mesh. */
+    public static final int MAX_MATERIALS = 1 << 16;
     /** Longest OBJ text read (characters, about bytes): 2^31 - 1, the most a Java array can index. */
     public static final long MAX_CHARACTERS = Integer.MAX_VALUE;
 
@@ -341,11 +343,16 @@ public final class ObjReader {
     }
 
     /** The index of the material the current faces take, in order of first use. */
-    private int material() {
+    private int material() throws ObjFormatException {
         if (currentMaterial < 0) {
             String name = byMaterial ? pendingMaterial : null;
             Integer index = materialIndex.get(name);
             if (index == null) {
+                // Each material becomes a mesh of its own: bounded, so a file cannot make millions of tiny ones.
+                if (materialNames.size() >= MAX_MATERIALS) {
+                    throw error("the faces use more than " + MAX_MATERIALS + " materials (usemtl names), the most"
+                            + " one OBJ file may use here");
+                }
                 index = materialNames.size();
                 materialNames.add(name);
                 materialIndex.put(name, index);

@@ -75,6 +75,34 @@ class ObjMaterialsTest {
     }
 
     @Test
+    void manyMaterialSwitchesStayFast() throws ObjFormatException {
+        // 20,000 materials of one triangle each: grouping must not cost materials x triangles (4 * 10^8 steps).
+        StringBuilder text = new StringBuilder("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+        for (int i = 0; i < 20_000; i++) text.append("usemtl m").append(i).append("\nf 1 2 3\n");
+        long start = System.nanoTime();
+        ObjModel model = ObjReader.parseModel("many.obj", text.toString());
+        assertEquals(20_000, model.parts().size());
+        assertEquals("m19999", model.parts().get(19_999).material());
+        assertTrue(System.nanoTime() - start < 5_000_000_000L, "took " + (System.nanoTime() - start) / 1e9 + " s");
+    }
+
+    @Test
+    void theNumberOfMaterialsIsBounded() {
+        StringBuilder text = new StringBuilder("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+        for (int i = 0; i <= ObjReader.MAX_MATERIALS; i++)
+            text.append("usemtl m").append(i).append("\nf 1 2 3\n");
+        ObjFormatException e =
+                assertThrows(ObjFormatException.class, () -> ObjReader.parseModel("many.obj", text.toString()));
+        assertEquals(3 + 2 * ObjReader.MAX_MATERIALS + 2, e.getLine());
+        assertTrue(e.getReason().startsWith("the faces use more than 65536 materials"), e.getMessage());
+        StringBuilder mtl = new StringBuilder();
+        for (int i = 0; i <= MtlReader.MAX_MATERIALS; i++)
+            mtl.append("newmtl m").append(i).append('\n');
+        e = assertThrows(ObjFormatException.class, () -> MtlReader.parse("many.mtl", mtl.toString()));
+        assertEquals("many.mtl:65537: more than 65536 materials, the most an MTL file may have here", e.getMessage());
+    }
+
+    @Test
     void badTextureAndMaterialStatementsNameTheLine() {
         String[][] cases = {
             {
