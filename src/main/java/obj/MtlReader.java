@@ -176,6 +176,10 @@ public final class MtlReader {
 
     private void newMaterial(String materialName) throws ObjFormatException {
         if (materialName.isEmpty()) throw error("'newmtl' needs a material name");
+        if (materialName.length() > ObjReader.MAX_NAME_LENGTH) {
+            throw error("'newmtl' name of " + materialName.length() + " characters; a material name may have at most "
+                    + ObjReader.MAX_NAME_LENGTH);
+        }
         store();
         if (materials.size() >= MAX_MATERIALS && !materials.containsKey(materialName)) {
             throw error("more than " + MAX_MATERIALS + " materials, the most an MTL file may have here");

@@ -197,6 +197,8 @@ public final class ObjReader {
 
     /** Longest line read (characters): OBJ lines are short, a face of a thousand corners fits. */
     public static final int MAX_LINE_LENGTH = 1 << 16;
+    /** Longest material name ({@code usemtl}, {@code newmtl}), so names cannot fill the heap. */
+    public static final int MAX_NAME_LENGTH = 1024;
     /** Most materials ({@code usemtl} names that faces use) in one OBJ file; each becomes a mesh. */
     public static final int MAX_MATERIALS = 1 << 16;
     /** Longest OBJ text read (characters, about bytes): 2^31 - 1, the most a Java array can index. */
@@ -333,6 +335,10 @@ public final class ObjReader {
 
     private void useMaterial(String name) throws ObjFormatException {
         if (name.isEmpty()) throw error("'usemtl' needs a material name");
+        if (name.length() > MAX_NAME_LENGTH) {
+            throw error("'usemtl' name of " + name.length() + " characters; a material name may have at most "
+                    + MAX_NAME_LENGTH);
+        }
         pendingMaterial = name;
         currentMaterial = -1; // assigned by the next face, so a usemtl without faces makes no empty part
     }

@@ -142,6 +142,10 @@ class MtlReaderTest {
             {"newmtl a\nmap_Kd -nope x.png\n", "bad.mtl:2: 'map_Kd' option '-nope' is not a texture option"},
             {"Kd 1 1 1\n", "bad.mtl:1: 'Kd' before any 'newmtl'"},
             {"newmtl\n", "bad.mtl:1: 'newmtl' needs a material name"},
+            {
+                "newmtl " + "n".repeat(1025) + "\n",
+                "bad.mtl:1: 'newmtl' name of 1025 characters; a material name may" + " have at most 1024"
+            },
             {"newmtl a\n3d 1\n", "bad.mtl:2: '3d' is not an MTL statement"},
             {"# only a comment\n", "bad.mtl: has no materials ('newmtl' lines)"},
             {"root:x:0:0:root:/root:/bin/bash\n", "bad.mtl:1: does not start like an MTL file"},

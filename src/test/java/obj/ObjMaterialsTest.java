@@ -123,6 +123,10 @@ class ObjMaterialsTest {
             {"vt 1 1e999\n", "b.obj:1: 'vt' value '1e999' must be a finite number"},
             {"v 0 0 0\nusemtl\n", "b.obj:2: 'usemtl' needs a material name"},
             {"mtllib\n", "b.obj:1: 'mtllib' needs at least one file name"},
+            {
+                "usemtl " + "n".repeat(1025) + "\n",
+                "b.obj:1: 'usemtl' name of 1025 characters; a material name may have" + " at most 1024"
+            },
         };
         for (String[] c : cases) {
             ObjFormatException e =
