@@ -81,6 +81,12 @@ public final class HitRecord {
     private int[] transparentIds = new int[8];
     double[] transparentKt = new double[3 * 8];
 
+    /**
+     * Texture coordinates of the hit point, interpolated from the vertices' by {@link Mesh#completeHit} for meshes
+     * with texture coordinates; 0 for other geometries (the tracer zeroes them before completing a hit).
+     */
+    public double texU, texV;
+
     void addTransparentHit(int id, double r, double g, double b) {
         if (transparentCount == transparentIds.length) {
             transparentIds = java.util.Arrays.copyOf(transparentIds, 2 * transparentCount);

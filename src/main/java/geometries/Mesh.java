@@ -7,7 +7,7 @@ import primitives.Vector;
 
 /**
  * An indexed triangle mesh: one shared vertex array and three vertex indices per triangle, optionally with
- * per-vertex normals for smooth shading. In a compiled scene the BVH sees each triangle on its own.
+ * per-vertex normals for smooth shading and per-vertex texture coordinates for texture maps. In a compiled scene the BVH sees each triangle on its own.
  *
  * <p>All edges of a mesh are treated as shared (see {@link WatertightTriangle}): a ray through an edge or vertex
  * hits exactly one of the triangles around it, so closed meshes do not leak. Validation rejects NaN or infinite
@@ -18,6 +18,8 @@ public class Mesh extends Geometry {
     final double[] vertices;
     final int[] indices;
     private final double[] normals;
+    /** u, v per vertex (OBJ {@code vt}), or null: then hits leave the texture coordinates at 0. */
+    private final double[] texCoords;
 
     /**
      * @param vertices x, y, z of each vertex
@@ -33,6 +35,16 @@ public class Mesh extends Geometry {
      * @param indices three 0-based vertex indices per triangle, at least one triangle
      */
     public Mesh(double[] vertices, int[] indices, double[] normals) {
+        this(vertices, indices, normals, null);
+    }
+
+    /**
+     * @param vertices x, y, z of each vertex
+     * @param indices three 0-based vertex indices per triangle, at least one triangle
+     * @param normals x, y, z of a normal per vertex (need not be unit), or null for flat shading
+     * @param texCoords u, v of texture coordinates per vertex (finite), or null for none
+     */
+    public Mesh(double[] vertices, int[] indices, double[] normals, double[] texCoords) {
         Util.requireNonNull(vertices, "mesh vertices");
         Util.requireNonNull(indices, "mesh indices");
         if (vertices.length % 3 != 0) {
@@ -68,9 +80,22 @@ public class Mesh extends Geometry {
                 }
             }
         }
+        if (texCoords != null) {
+            if (texCoords.length != 2 * vertexCount) {
+                throw new IllegalArgumentException("mesh texture coordinates must hold one u, v pair per vertex ("
+                        + 2 * vertexCount + " values), but had " + texCoords.length);
+            }
+            for (int i = 0; i < texCoords.length; i++) {
+                if (!Double.isFinite(texCoords[i])) {
+                    throw new IllegalArgumentException(
+                            "mesh texture coordinate " + i / 2 + " has a non-finite value " + texCoords[i]);
+                }
+            }
+        }
         this.vertices = vertices.clone();
         this.indices = indices.clone();
         this.normals = normals == null ? null : normals.clone();
+        this.texCoords = texCoords == null ? null : texCoords.clone();
     }
 
     /**
@@ -119,6 +144,15 @@ public class Mesh extends Geometry {
     }
 
     /**
+     * A copy of the per-vertex texture coordinates, or null when the mesh has none.
+     *
+     * @return a new array of u, v per vertex, or null
+     */
+    public double[] getTexCoords() {
+        return texCoords == null ? null : texCoords.clone();
+    }
+
+    /**
      * This mesh scaled by {@code scale} about the origin, then moved by (dx, dy, dz), with the same material.
      *
      * @param scale the scale factor, positive and finite
@@ -136,7 +170,7 @@ public class Mesh extends Geometry {
             moved[i + 1] = vertices[i + 1] * scale + dy;
             moved[i + 2] = vertices[i + 2] * scale + dz;
         }
-        Mesh mesh = new Mesh(moved, indices, normals);
+        Mesh mesh = new Mesh(moved, indices, normals, texCoords);
         mesh.setMaterial(getMaterial()).setEmission(getEmission());
         return mesh;
     }
@@ -232,6 +266,12 @@ public class Mesh extends Geometry {
         WatertightTriangle.completeHit(vertices, a, b, c, hit);
         if (!WatertightTriangle.setNormal(vertices, a, b, c, hit)) hit.setNormal(0, 0, 0); // never for a hit
         if (normals != null) interpolateShadingNormal(a, b, c, hit);
+        if (texCoords != null) {
+            double b1 = hit.u, b2 = hit.v, b0 = 1 - b1 - b2;
+            int ta = 2 * indices[3 * i], tb = 2 * indices[3 * i + 1], tc = 2 * indices[3 * i + 2];
+            hit.texU = b0 * texCoords[ta] + b1 * texCoords[tb] + b2 * texCoords[tc];
+            hit.texV = b0 * texCoords[ta + 1] + b1 * texCoords[tb + 1] + b2 * texCoords[tc + 1];
+        }
     }
 
     /**

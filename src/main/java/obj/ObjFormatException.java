@@ -3,9 +3,9 @@ package obj;
 import primitives.Printable;
 
 /**
- * A Wavefront OBJ file that cannot be read: it names the file, the line (1-based; 0 when the problem is not on
- * one line, such as a missing file or a file without faces) and the reason. The only exception {@link ObjReader}
- * throws. Control characters in the message (from a file name or a quoted token) are escaped ({@link Printable}).
+ * A Wavefront OBJ or MTL file that cannot be read: it names the file, the line (1-based; 0 when the problem is not
+ * on one line, such as a missing file or a file without faces) and the reason. The only exception {@link ObjReader}
+ * and {@link MtlReader} throw. Control characters in the message (from a file name or a quoted token) are escaped ({@link Printable}).
  */
 public final class ObjFormatException extends Exception {
     /** The file as the caller named it. */

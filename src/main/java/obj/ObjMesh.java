@@ -4,26 +4,48 @@ import geometries.Mesh;
 import java.util.List;
 
 /**
- * The triangles read from an OBJ file as flat arrays, ready for {@link Mesh}: x, y, z per vertex, three vertex
- * indices per triangle (0-based) and optionally a normal per vertex. Also the warnings about statements that
- * were skipped, one per kind.
+ * Triangles read from an OBJ file as flat arrays, ready for {@link Mesh}: x, y, z per vertex, three vertex indices
+ * per triangle (0-based), optionally a normal and texture coordinates per vertex, and the name of the OBJ material
+ * ({@code usemtl}) the faces use. Also the warnings about statements that were skipped, one per kind.
  *
  * @param vertices x, y, z of each vertex
  * @param indices three 0-based vertex indices per triangle
  * @param normals x, y, z of a normal per vertex, or null when the file has none for some face corner
+ * @param texCoords u, v per vertex, or null when the file has none for some face corner
+ * @param material the {@code usemtl} name of these faces, or null for faces before any {@code usemtl}
  * @param warnings one line per kind of skipped statement, in order of first appearance
  */
-public record ObjMesh(double[] vertices, int[] indices, double[] normals, List<String> warnings) {
+public record ObjMesh(
+        double[] vertices,
+        int[] indices,
+        double[] normals,
+        double[] texCoords,
+        String material,
+        List<String> warnings) {
     /**
      * Copies the warnings into an unmodifiable list.
      *
      * @param vertices x, y, z of each vertex
      * @param indices three 0-based vertex indices per triangle
      * @param normals x, y, z of a normal per vertex, or null
+     * @param texCoords u, v per vertex, or null
+     * @param material the {@code usemtl} name, or null
      * @param warnings one line per kind of skipped statement; not null, no null element
      */
     public ObjMesh {
         warnings = List.copyOf(warnings);
+    }
+
+    /**
+     * Triangles without texture coordinates or material.
+     *
+     * @param vertices x, y, z of each vertex
+     * @param indices three 0-based vertex indices per triangle
+     * @param normals x, y, z of a normal per vertex, or null
+     * @param warnings one line per kind of skipped statement; not null, no null element
+     */
+    public ObjMesh(double[] vertices, int[] indices, double[] normals, List<String> warnings) {
+        this(vertices, indices, normals, null, null, warnings);
     }
 
     /**
@@ -45,12 +67,13 @@ public record ObjMesh(double[] vertices, int[] indices, double[] normals, List<S
     }
 
     /**
-     * A mesh geometry of these triangles, smooth-shaded by the file's normals if {@code smooth} and present.
+     * A mesh geometry of these triangles, smooth-shaded by the file's normals if {@code smooth} and present, with
+     * the texture coordinates when present.
      *
      * @param smooth true to interpolate the file's normals (when it has them), false for flat shading
-     * @return a new mesh sharing this record's arrays
+     * @return a new mesh
      */
     public Mesh toMesh(boolean smooth) {
-        return new Mesh(vertices, indices, smooth ? normals : null);
+        return new Mesh(vertices, indices, smooth ? normals : null, texCoords);
     }
 }

@@ -1,6 +1,5 @@
 package obj;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -11,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -22,28 +20,31 @@ import primitives.Limits;
 import renderer.RenderMemory;
 
 /**
- * Reads the geometry of a Wavefront OBJ file: {@code v} (vertices), {@code vn} (normals) and {@code f} (faces,
- * any polygon, triangulated as a fan from its first corner), with 1-based or negative (counted back from the
- * latest) indices and {@code #} comments. Other statements ({@code vt}, {@code o}, {@code g}, {@code s},
- * {@code usemtl}, ...) are skipped with one warning per kind. A malformed {@code v}, {@code vn} or {@code f} line,
- * a zero or out-of-range index, or a file without faces is an {@link ObjFormatException} naming file:line and
- * the reason; nothing else escapes.
+ * Reads the geometry of a Wavefront OBJ file: {@code v} (vertices), {@code vn} (normals), {@code vt} (texture
+ * coordinates), {@code f} (faces, any polygon, triangulated as a fan from its first corner), with 1-based or
+ * negative (counted back from the latest) indices and {@code #} comments, and the materials: {@code mtllib}
+ * (material libraries, read by the caller, see {@link MtlReader}) and {@code usemtl} (the material of the faces
+ * that follow). Other statements ({@code o}, {@code g}, {@code s}, ...) are skipped with one warning per kind. A
+ * malformed line, a zero or out-of-range index, or a file without faces is an {@link ObjFormatException} naming
+ * file:line and the reason; nothing else escapes.
  *
- * <p>Indices must refer to elements defined on earlier lines (as every exporter writes them). Normals are used
- * only if every face corner has one; a mesh where some corners lack them is flat-shaded (with a warning).
+ * <p>Indices must refer to elements defined on earlier lines (as every exporter writes them). Normals (texture
+ * coordinates) are used for a material's faces only if every corner of them has one; otherwise they are dropped
+ * with a warning (flat shading; no texture coordinates). {@link #readModel} gives one mesh per material;
+ * {@link #read} one mesh of all faces.
  */
 public final class ObjReader {
     /** What the skipped statements are, for the warnings; others are "not supported". */
     private static final Map<String, String> SKIPPED = Map.of(
-            "vt", "texture coordinates are not used",
             "vp", "parameter-space vertices are not supported",
             "o", "object names are not used",
             "g", "group names are not used",
             "s", "smoothing groups are not used (normals come from vn)",
-            "usemtl", "OBJ materials are not used (the scene file assigns the material)",
-            "mtllib", "OBJ material libraries are not used (the scene file assigns the material)",
             "l", "polylines are not supported",
             "p", "points are not supported");
+
+    /** The statements read (besides the skipped ones): a line starting with one makes the file an OBJ file. */
+    private static final java.util.Set<String> STATEMENTS = java.util.Set.of("v", "vn", "vt", "f", "usemtl", "mtllib");
 
     private final String file;
     private final DoubleList vertices = new DoubleList();
@@ -52,10 +53,27 @@ public final class ObjReader {
     private final IntList cornerVertices = new IntList();
 
     private final IntList cornerNormals = new IntList();
+    /** Per triangle corner: the texture coordinate index (-1 if none), 0-based. */
+    private final IntList cornerTexCoords = new IntList();
+    /** u, v per {@code vt}. */
+    private final DoubleList texCoords = new DoubleList();
+    /** Per triangle: its material's index in {@link #materialNames}. */
+    private final IntList triangleMaterials = new IntList();
+    /** The {@code usemtl} names in order of first use; null for faces before any {@code usemtl}. */
+    private final List<String> materialNames = new ArrayList<>();
+
+    private final Map<String, Integer> materialIndex = new HashMap<>();
+    private final List<ObjModel.Library> libraries = new ArrayList<>();
+    /** The current material's index in {@link #materialNames}, -1 until a face or usemtl needs one. */
+    private int currentMaterial = -1;
+    /** The name the next faces take (null: before any usemtl). */
+    private String pendingMaterial;
+
     private final Map<String, int[]> skipped = new LinkedHashMap<>();
     private final List<String> notes = new ArrayList<>();
-    private int textureCoordinates;
     private int lineNumber;
+    /** Whether faces are kept apart by material ({@link #readModel}) or all in one part ({@link #read}). */
+    private boolean byMaterial;
 
     private ObjReader(String file, LongSupplier heap) {
         this.file = primitives.Printable.message(file); // it names the file in warnings and errors
@@ -64,7 +82,7 @@ public final class ObjReader {
     }
 
     /**
-     * Reads an OBJ file; the path as given names it in messages.
+     * Reads an OBJ file as one mesh of all its faces; the path as given names it in messages.
      *
      * @param path the OBJ file
      * @return the triangles, normals and warnings read
@@ -75,7 +93,7 @@ public final class ObjReader {
     }
 
     /**
-     * Reads an OBJ file that messages call {@code name}.
+     * Reads an OBJ file that messages call {@code name} as one mesh of all its faces (materials not applied).
      *
      * @param path the OBJ file
      * @param name the file's name in messages and warnings
@@ -83,12 +101,30 @@ public final class ObjReader {
      * @throws ObjFormatException if the file cannot be read, is malformed or has no faces
      */
     public static ObjMesh read(Path path, String name) throws ObjFormatException {
+        return MeshAssembler.merged(readModel(path, name, RenderMemory::available, false));
+    }
+
+    /**
+     * Reads an OBJ file that messages call {@code name} as one mesh per {@code usemtl} material, with the
+     * {@code mtllib} references for the caller to read (it decides where files may be read from).
+     *
+     * @param path the OBJ file
+     * @param name the file's name in messages and warnings
+     * @return the parts, material libraries and warnings
+     * @throws ObjFormatException if the file cannot be read, is malformed or has no faces
+     */
+    public static ObjModel readModel(Path path, String name) throws ObjFormatException {
+        return readModel(path, name, RenderMemory::available, true);
+    }
+
+    private static ObjModel readModel(Path path, String name, LongSupplier heap, boolean byMaterial)
+            throws ObjFormatException {
         if (Files.isDirectory(path)) throw new ObjFormatException(name, 0, "is a folder, not an OBJ file");
         if (Files.exists(path) && !Files.isRegularFile(path)) {
             throw new ObjFormatException(name, 0, "is not a regular file");
         }
         try (InputStream in = Files.newInputStream(path)) {
-            return read(name, new InputStreamReader(in, StandardCharsets.ISO_8859_1));
+            return readModel(name, new InputStreamReader(in, StandardCharsets.ISO_8859_1), heap, byMaterial);
         } catch (NoSuchFileException e) {
             throw new ObjFormatException(name, 0, "file not found", e);
         } catch (IOException e) {
@@ -111,44 +147,40 @@ public final class ObjReader {
 
     /** {@link #read(String, Reader)} against the heap {@code heap} reports (tests give a small one). */
     static ObjMesh read(String name, Reader text, LongSupplier heap) throws ObjFormatException {
+        return MeshAssembler.merged(readModel(name, text, heap, false));
+    }
+
+    /**
+     * Reads OBJ text held in a string as one mesh per material ({@link #readModel(Path, String)}).
+     *
+     * @param name the text's name in messages and warnings
+     * @param text the whole OBJ text
+     * @return the parts, material libraries and warnings
+     * @throws ObjFormatException if the text is malformed, too long or has no faces
+     */
+    public static ObjModel parseModel(String name, String text) throws ObjFormatException {
+        return readModel(name, new StringReader(text), RenderMemory::available, true);
+    }
+
+    /**
+     * Reads OBJ text; {@code byMaterial} keeps the faces of each material apart (else: one part of all faces, and
+     * usemtl and mtllib only checked).
+     */
+    private static ObjModel readModel(String name, Reader text, LongSupplier heap, boolean byMaterial)
+            throws ObjFormatException {
         ObjReader reader = new ObjReader(name, heap);
+        reader.byMaterial = byMaterial;
         try {
-            BufferedReader lines = new BufferedReader(text);
-            StringBuilder line = new StringBuilder();
-            while (readLine(lines, line, reader)) reader.parseLine(line.toString());
+            // Bounded lines: a file without line breaks, or an endless one, is an error, not an out-of-memory crash.
+            BoundedLines lines = new BoundedLines(text, reader.file, "OBJ", MAX_LINE_LENGTH, MAX_CHARACTERS);
+            for (String line = lines.next(false); line != null; line = lines.next(reader.sawStatement)) {
+                reader.lineNumber = lines.number();
+                reader.parseLine(line);
+            }
         } catch (IOException e) {
             throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
         }
         return reader.finish();
-    }
-
-    /**
-     * Reads the next line into {@code line} (without its terminator) and counts it; false at the end of the text.
-     * Lines are bounded ({@link #MAX_LINE_LENGTH}) and so is the whole text ({@link #MAX_CHARACTERS}): a file
-     * without line breaks, or an endless one, is an error, not an out-of-memory crash.
-     */
-    private static boolean readLine(BufferedReader in, StringBuilder line, ObjReader reader)
-            throws IOException, ObjFormatException {
-        line.setLength(0);
-        int c = in.read();
-        if (c < 0) return false;
-        reader.lineNumber++;
-        while (c >= 0 && c != '\n') {
-            if (++reader.characters > MAX_CHARACTERS) {
-                throw reader.error("the file is longer than " + MAX_CHARACTERS + " characters, the most an OBJ"
-                        + " file may have here");
-            }
-            if (c != '\r') line.append((char) c);
-            if (line.length() > MAX_LINE_LENGTH) {
-                throw reader.error(
-                        reader.sawStatement
-                                ? "line longer than " + MAX_LINE_LENGTH + " characters"
-                                : "line longer than " + MAX_LINE_LENGTH
-                                        + " characters before any OBJ statement: this is not an OBJ file");
-            }
-            c = in.read();
-        }
-        return true;
     }
 
     /**
@@ -165,22 +197,27 @@ public final class ObjReader {
 
     /** Longest line read (characters): OBJ lines are short, a face of a thousand corners fits. */
     public static final int MAX_LINE_LENGTH = 1 << 16;
+    /** Longest material name ({@code usemtl}, {@code newmtl}), so names cannot fill the heap. */
+    public static final int MAX_NAME_LENGTH = 1024;
+    /** Most materials ({@code usemtl} names that faces use) in one OBJ file; each becomes a mesh. */
+    public static final int MAX_MATERIALS = 1 << 16;
     /** Longest OBJ text read (characters, about bytes): 2^31 - 1, the most a Java array can index. */
     public static final long MAX_CHARACTERS = Integer.MAX_VALUE;
 
     /**
-     * Heap per triangle: the reader's corner lists and the mesh made of them (40 bytes), and the accelerator built
+     * Heap per triangle: the reader's corner and material lists and the mesh made of them (56 bytes), and the accelerator built
      * to render it ({@link RenderMemory#BYTES_PER_PRIMITIVE}). Checked while reading, so a mesh too large for the
      * heap stops with the figures at the line where it outgrew it, not with an out-of-memory crash.
      */
-    public static final int BYTES_PER_TRIANGLE = 40 + RenderMemory.BYTES_PER_PRIMITIVE;
-    /** Heap per {@code v} or {@code vn} line: the reader's list, the mesh's copies, the vertex-normal pairing. */
+    public static final int BYTES_PER_TRIANGLE = 56 + RenderMemory.BYTES_PER_PRIMITIVE;
+    /**
+     * Heap per {@code v}, {@code vn} or {@code vt} line: the reader's list, the mesh's copies, the pairing of
+     * positions, normals and texture coordinates into vertices.
+     */
     public static final int BYTES_PER_VERTEX = 100;
     /** Elements (coordinates and corners) read between two checks of the size against the heap. */
     private static final int CHECK_EVERY = 1 << 16;
 
-    /** Characters read so far. */
-    private long characters;
     /** Reports the heap the JVM can give (garbage counted as used until collected). */
     private final LongSupplier heap;
     /** The heap when reading began: what the mesh may need. */
@@ -202,16 +239,19 @@ public final class ObjReader {
         String[] tokens = line.split("\\s+");
         String keyword = tokens[0];
         // A line that starts with an OBJ keyword makes the file an OBJ file: its tokens may then be quoted.
-        if (keyword.equals("v") || keyword.equals("vn") || keyword.equals("f") || SKIPPED.containsKey(keyword)) {
+        if (STATEMENTS.contains(keyword) || SKIPPED.containsKey(keyword)) {
             sawStatement = true;
         }
         switch (keyword) {
             case "v" -> vertex(tokens);
             case "vn" -> normal(tokens);
             case "f" -> face(tokens);
+            case "vt" -> textureCoordinate(tokens);
+            case "usemtl" -> useMaterial(line.substring(keyword.length()).strip());
+            case "mtllib" -> materialLibraries(tokens);
             default -> skip(keyword);
         }
-        long elements = (long) vertices.size() + normals.size() + cornerVertices.size();
+        long elements = (long) vertices.size() + normals.size() + texCoords.size() + cornerVertices.size();
         if (elements >= nextSizeCheck) {
             checkSize();
             nextSizeCheck = elements + CHECK_EVERY;
@@ -223,11 +263,13 @@ public final class ObjReader {
      * what the heap can give for it to be loaded and rendered.
      */
     private void checkSize() throws ObjFormatException {
-        long triangles = cornerVertices.size() / 3, points = (vertices.size() + normals.size()) / 3;
+        long triangles = cornerVertices.size() / 3;
+        long points = (vertices.size() + normals.size()) / 3 + texCoords.size() / 2;
         if (triangles > Limits.MAX_PRIMITIVES || points > Limits.MAX_PRIMITIVES) {
             throw error(String.format(
                     Locale.ROOT,
-                    "the mesh has %,d triangles and %,d vertices and normals so far; one mesh may have at most %,d"
+                    "the mesh has %,d triangles and %,d vertices, normals and texture coordinates so far; one mesh"
+                            + " may have at most %,d"
                             + " of each",
                     triangles,
                     points,
@@ -238,15 +280,19 @@ public final class ObjReader {
             // Garbage counted as used when reading began: collect it once and count what this reader holds.
             budgetConfirmed = true;
             System.gc();
-            long held = 8L * (vertices.capacity() + normals.capacity())
-                    + 4L * (cornerVertices.capacity() + cornerNormals.capacity());
+            long held = 8L * (vertices.capacity() + normals.capacity() + texCoords.capacity())
+                    + 4L
+                            * (cornerVertices.capacity()
+                                    + cornerNormals.capacity()
+                                    + cornerTexCoords.capacity()
+                                    + triangleMaterials.capacity());
             memoryBudget = Math.max(memoryBudget, heap.getAsLong() + held);
         }
         if (bytes > memoryBudget) {
             throw error(String.format(
                     Locale.ROOT,
                     "the mesh needs about %s of memory to load and render by this line (%,d triangles at %d"
-                            + " bytes, %,d vertices and normals at %d bytes), but this JVM could give %s; simplify"
+                            + " bytes, %,d vertices, normals and texture coordinates at %d bytes), but this JVM could give %s; simplify"
                             + " the mesh or give Java more memory (-Xmx)",
                     RenderMemory.bytes(bytes),
                     triangles,
@@ -276,10 +322,57 @@ public final class ObjReader {
         for (int i = 1; i <= 3; i++) normals.add(number(tokens[i], "vn"));
     }
 
+    private void textureCoordinate(String[] tokens) throws ObjFormatException {
+        int n = tokens.length - 1;
+        // u, u v or u v w (w is for 3D textures, unused).
+        if (n < 1 || n > 3) throw error("'vt' needs u (optionally v and w), but has " + n + " values");
+        double u = number(tokens[1], "vt");
+        double v = n >= 2 ? number(tokens[2], "vt") : 0;
+        if (n == 3) number(tokens[3], "vt");
+        texCoords.add(u);
+        texCoords.add(v);
+    }
+
+    private void useMaterial(String name) throws ObjFormatException {
+        if (name.isEmpty()) throw error("'usemtl' needs a material name");
+        if (name.length() > MAX_NAME_LENGTH) {
+            throw error("'usemtl' name of " + name.length() + " characters; a material name may have at most "
+                    + MAX_NAME_LENGTH);
+        }
+        pendingMaterial = name;
+        currentMaterial = -1; // assigned by the next face, so a usemtl without faces makes no empty part
+    }
+
+    private void materialLibraries(String[] tokens) throws ObjFormatException {
+        if (tokens.length < 2) throw error("'mtllib' needs at least one file name");
+        for (int i = 1; i < tokens.length; i++) libraries.add(new ObjModel.Library(tokens[i], lineNumber));
+    }
+
+    /** The index of the material the current faces take, in order of first use. */
+    private int material() throws ObjFormatException {
+        if (currentMaterial < 0) {
+            String name = byMaterial ? pendingMaterial : null;
+            Integer index = materialIndex.get(name);
+            if (index == null) {
+                // Each material becomes a mesh of its own: bounded, so a file cannot make millions of tiny ones.
+                if (materialNames.size() >= MAX_MATERIALS) {
+                    throw error("the faces use more than " + MAX_MATERIALS + " materials (usemtl names), the most"
+                            + " one OBJ file may use here");
+                }
+                index = materialNames.size();
+                materialNames.add(name);
+                materialIndex.put(name, index);
+            }
+            currentMaterial = index;
+        }
+        return currentMaterial;
+    }
+
     private void face(String[] tokens) throws ObjFormatException {
         int n = tokens.length - 1;
         if (n < 3) throw error("'f' needs at least 3 corners, but has " + n);
         int[] v = new int[n];
+        int[] vt = new int[n];
         int[] vn = new int[n];
         for (int i = 0; i < n; i++) {
             String corner = tokens[i + 1];
@@ -288,23 +381,25 @@ public final class ObjReader {
                 throw error("face corner '" + abbreviate(corner) + "' must be v, v/vt, v//vn or v/vt/vn");
             }
             v[i] = resolve(parts[0], vertices.size() / 3, "vertex", corner);
-            if (parts.length >= 2 && !parts[1].isEmpty()) {
-                // Texture coordinates are not used, but the index must still be well formed.
-                resolve(parts[1], textureCoordinates, "texture coordinate", corner);
-            }
+            vt[i] = parts.length >= 2 && !parts[1].isEmpty()
+                    ? resolve(parts[1], texCoords.size() / 2, "texture coordinate", corner)
+                    : -1;
             vn[i] = parts.length == 3 && !parts[2].isEmpty()
                     ? resolve(parts[2], normals.size() / 3, "normal", corner)
                     : -1;
         }
+        int material = material();
         for (int i = 1; i + 1 < n; i++) { // fan from the first corner
-            addCorner(v[0], vn[0]);
-            addCorner(v[i], vn[i]);
-            addCorner(v[i + 1], vn[i + 1]);
+            addCorner(v[0], vt[0], vn[0]);
+            addCorner(v[i], vt[i], vn[i]);
+            addCorner(v[i + 1], vt[i + 1], vn[i + 1]);
+            triangleMaterials.add(material);
         }
     }
 
-    private void addCorner(int vertex, int normal) {
+    private void addCorner(int vertex, int texCoord, int normal) {
         cornerVertices.add(vertex);
+        cornerTexCoords.add(texCoord);
         cornerNormals.add(normal);
     }
 
@@ -355,7 +450,6 @@ public final class ObjReader {
                             : "does not start like an OBJ file: its first statement is not one (a line starts with a"
                                     + " keyword such as v, vn, f, o or g)");
         }
-        if (keyword.equals("vt")) textureCoordinates++;
         skipped.computeIfAbsent(keyword, k -> new int[] {0, lineNumber})[0]++;
     }
 
@@ -365,7 +459,7 @@ public final class ObjReader {
         if (!notes.contains(text)) notes.add(text);
     }
 
-    private ObjMesh finish() throws ObjFormatException {
+    private ObjModel finish() throws ObjFormatException {
         if (cornerVertices.size() == 0) {
             throw new ObjFormatException(file, 0, "has no faces ('f' lines): a mesh needs at least one triangle");
         }
@@ -377,39 +471,21 @@ public final class ObjReader {
                     + SKIPPED.getOrDefault(e.getKey(), "not supported"));
         }
         for (String note : notes) warnings.add(file + ": " + note);
-
-        int corners = cornerVertices.size();
-        boolean allNormals = true;
-        for (int i = 0; i < corners && allNormals; i++) {
-            int n = cornerNormals.get(i);
-            allNormals = n >= 0 && !normals.isZero(n);
+        if (!byMaterial && (pendingMaterial != null || !libraries.isEmpty())) {
+            warnings.add(file + ": materials (mtllib, usemtl) are not applied here: all faces form one mesh");
         }
-        if (!allNormals) {
-            if (normals.size() > 0) {
-                warnings.add(
-                        file + ": normals ignored (flat shading): some face corners have no normal or a zero" + " one");
-            }
-            return new ObjMesh(vertices.toArray(), cornerVertices.toArray(), null, warnings);
-        }
-        // OBJ indexes positions and normals separately; a mesh has one normal per vertex: one vertex per pair.
-        Map<Long, Integer> pairs = new HashMap<>();
-        DoubleList v = new DoubleList(), n = new DoubleList();
-        int[] indices = new int[corners];
-        for (int i = 0; i < corners; i++) {
-            int vi = cornerVertices.get(i), ni = cornerNormals.get(i);
-            long key = ((long) vi << 32) | ni;
-            Integer index = pairs.get(key);
-            if (index == null) {
-                index = pairs.size();
-                pairs.put(key, index);
-                for (int k = 0; k < 3; k++) {
-                    v.add(vertices.get(3 * vi + k));
-                    n.add(normals.get(3 * ni + k));
-                }
-            }
-            indices[i] = index;
-        }
-        return new ObjMesh(v.toArray(), indices, n.toArray(), warnings);
+        MeshAssembler assembler = new MeshAssembler(
+                file,
+                vertices,
+                normals,
+                texCoords,
+                cornerVertices,
+                cornerNormals,
+                cornerTexCoords,
+                triangleMaterials,
+                materialNames);
+        List<ObjMesh> parts = assembler.parts(warnings);
+        return new ObjModel(parts, libraries, warnings);
     }
 
     private ObjFormatException error(String reason) {
@@ -419,68 +495,5 @@ public final class ObjReader {
     /** Input quoted in a message: escaped (no terminal control sequences) and short. */
     private static String abbreviate(String s) {
         return primitives.Printable.of(s.length() <= 20 ? s : s.substring(0, 20) + "...");
-    }
-
-    /** Twice the capacity, without overflowing (the size checks stop a mesh long before the array limit). */
-    private static int grown(int capacity) {
-        return (int) Math.min(Integer.MAX_VALUE - 8, 2L * capacity);
-    }
-
-    /** A growable double array: OBJ files hold millions of values, which boxed lists would triple in size. */
-    private static final class DoubleList {
-        private double[] data = new double[48];
-        private int size;
-
-        void add(double value) {
-            if (size == data.length) data = Arrays.copyOf(data, grown(size));
-            data[size++] = value;
-        }
-
-        double get(int i) {
-            return data[i];
-        }
-
-        boolean isZero(int triple) {
-            return data[3 * triple] == 0 && data[3 * triple + 1] == 0 && data[3 * triple + 2] == 0;
-        }
-
-        int size() {
-            return size;
-        }
-
-        int capacity() {
-            return data.length;
-        }
-
-        double[] toArray() {
-            return Arrays.copyOf(data, size);
-        }
-    }
-
-    /** A growable int array. */
-    private static final class IntList {
-        private int[] data = new int[48];
-        private int size;
-
-        void add(int value) {
-            if (size == data.length) data = Arrays.copyOf(data, grown(size));
-            data[size++] = value;
-        }
-
-        int get(int i) {
-            return data[i];
-        }
-
-        int size() {
-            return size;
-        }
-
-        int capacity() {
-            return data.length;
-        }
-
-        int[] toArray() {
-            return Arrays.copyOf(data, size);
-        }
     }
 }

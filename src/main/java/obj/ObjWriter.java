@@ -7,7 +7,8 @@ import java.nio.file.Path;
 
 /**
  * Writes a {@link Mesh} as a Wavefront OBJ file that {@link ObjReader} reads back to the same doubles: {@code v}
- * and, for smooth meshes, {@code vn} lines with shortest round-trip decimals, then one {@code f} per triangle.
+ * and, for smooth meshes, {@code vn} lines, for meshes with texture coordinates {@code vt} lines, with shortest
+ * round-trip decimals, then one {@code f} per triangle.
  */
 public final class ObjWriter {
     private ObjWriter() {}
@@ -24,6 +25,7 @@ public final class ObjWriter {
         double[] v = mesh.getVertices();
         int[] f = mesh.getIndices();
         double[] n = mesh.getNormals();
+        double[] uv = mesh.getTexCoords();
         StringBuilder s = new StringBuilder(32 * (v.length + f.length));
         if (comment != null) s.append("# ").append(comment.replace('\n', ' ')).append('\n');
         for (int i = 0; i < v.length; i += 3) {
@@ -46,12 +48,18 @@ public final class ObjWriter {
                         .append('\n');
             }
         }
+        if (uv != null) {
+            for (int i = 0; i < uv.length; i += 2) {
+                s.append("vt ").append(uv[i]).append(' ').append(uv[i + 1]).append('\n');
+            }
+        }
         for (int i = 0; i < f.length; i += 3) {
             s.append('f');
             for (int k = 0; k < 3; k++) {
                 int index = f[i + k] + 1; // OBJ counts from 1
                 s.append(' ').append(index);
-                if (n != null) s.append("//").append(index);
+                if (uv != null) s.append('/').append(index);
+                if (n != null) s.append(uv != null ? "/" : "//").append(index);
             }
             s.append('\n');
         }

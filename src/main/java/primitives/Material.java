@@ -17,6 +17,8 @@ public final class Material {
     private int shininess = 0;
     private double indexOfRefraction = 1.0;
     private double roughness = 0.0;
+    /** Multiplies kD per hit point when set (MTL's map_Kd); null for a uniform kD. */
+    private Texture kDMap;
 
     /**
      * The ambient coefficient kA per channel.
@@ -249,6 +251,28 @@ public final class Material {
     }
 
     /**
+     * The texture that multiplies kD at each hit point (the diffuse colour map), or null.
+     *
+     * @return the diffuse map, or null when kD is uniform
+     */
+    public Texture getKdMap() {
+        return kDMap;
+    }
+
+    /**
+     * Sets the texture whose value at the hit point's texture coordinates multiplies kD per channel (as MTL's
+     * {@code map_Kd} multiplies {@code Kd}), or removes it with null, and returns this material. Only geometries with
+     * texture coordinates (meshes read with OBJ {@code vt}) vary across the map; others see its value at (0, 0).
+     *
+     * @param map the diffuse map, or null for a uniform kD
+     * @return this material
+     */
+    public Material setKdMap(Texture map) {
+        this.kDMap = map;
+        return this;
+    }
+
+    /**
      * Whether this material reflects any light as a mirror.
      *
      * @return true when kR is not zero
@@ -274,6 +298,7 @@ public final class Material {
     @Override
     public String toString() {
         return "Material{kA=" + kA + ", kD=" + kD + ", kS=" + kS + ", shininess=" + shininess + ", kR=" + kR + ", kT="
-                + kT + ", ior=" + indexOfRefraction + ", roughness=" + roughness + "}";
+                + kT + ", ior=" + indexOfRefraction + ", roughness=" + roughness
+                + (kDMap == null ? "" : ", kDMap=" + kDMap) + "}";
     }
 }

@@ -10,6 +10,7 @@ import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
 import primitives.ReusableRay;
+import primitives.Texture;
 import primitives.Vector;
 import renderer.sampling.SampleStream;
 import renderer.sampling.SamplingConfig;
@@ -114,6 +115,10 @@ public class SimpleRayTracer extends RayTracerBase {
     private void trace(
             Ray ray, TraceContext ctx, long path, int level, double kr, double kg, double kb, boolean maySplit) {
         HitRecord hit = ctx.hit.reset();
+        // Only textured meshes set texture coordinates: zeroed here, a texture elsewhere reads a fixed texel
+        // rather than the previous ray's (which would make images depend on the ray order).
+        hit.texU = 0;
+        hit.texV = 0;
         if (!accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) {
             ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
             return;
@@ -237,7 +242,16 @@ public class SimpleRayTracer extends RayTracerBase {
             long path,
             double weight) {
         Double3 kD = m.getKd(), kS = m.getKs();
-        boolean responds = !kD.isZero() || !kS.isZero();
+        double kdR = kD.d1, kdG = kD.d2, kdB = kD.d3;
+        Texture map = m.getKdMap();
+        if (map != null) { // untextured materials pay only this test
+            double[] texel = ctx.texel;
+            map.lookup(sp.texU, sp.texV, texel);
+            kdR *= texel[0];
+            kdG *= texel[1];
+            kdB *= texel[2];
+        }
+        boolean responds = kdR != 0 || kdG != 0 || kdB != 0 || !kS.isZero();
         boolean specularResponse = !kS.isZero();
         DirectLighting direct = ctx.direct(lights.length);
         direct.setAside = 0;
@@ -258,9 +272,9 @@ public class SimpleRayTracer extends RayTracerBase {
                 if (minusVr > 0) specular = Math.pow(minusVr, m.getShininess());
             }
             // The material's response to the light, per unit of its intensity.
-            double fr = kD.d1 * diffuse + kS.d1 * specular;
-            double fg = kD.d2 * diffuse + kS.d2 * specular;
-            double fb = kD.d3 * diffuse + kS.d3 * specular;
+            double fr = kdR * diffuse + kS.d1 * specular;
+            double fg = kdG * diffuse + kS.d2 * specular;
+            double fb = kdB * diffuse + kS.d3 * specular;
             direct.set(li, contributes ? DirectLighting.CONTRIBUTES : DirectLighting.WEIGHTLESS, fr, fg, fb, weight);
         }
         if (plan.lightCutoff > 0) {

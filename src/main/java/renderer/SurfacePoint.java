@@ -27,6 +27,9 @@ public final class SurfacePoint {
     /** The unit shading normal. */
     public double snx, sny, snz;
 
+    /** The hit point's texture coordinates (0 where the geometry has none). */
+    public double texU, texV;
+
     private double errorX, errorY, errorZ;
     /** The origin the last {@link #spawn} computed. */
     public double originX, originY, originZ;
@@ -69,6 +72,8 @@ public final class SurfacePoint {
         errorX = hit.errorX;
         errorY = hit.errorY;
         errorZ = hit.errorZ;
+        texU = hit.texU;
+        texV = hit.texV;
         return this;
     }
 

@@ -28,6 +28,9 @@ public final class TraceContext {
     /** The colour the last trace produced (the tracer's return value). */
     public double red, green, blue;
 
+    /** A diffuse map's value at the point being shaded (red, green, blue): the texture lookup's output. */
+    final double[] texel = new double[3];
+
     /** The transmittance toward the light being shaded (the visibility sampler's return value). */
     double visibleR, visibleG, visibleB;
     /** Whether the last disk of shadow rays all had the same transmittance (set by the soft-shadow sampler). */

@@ -11,7 +11,7 @@ import java.util.List;
 import primitives.Printable;
 
 /**
- * Where the files a scene refers to (OBJ meshes; later materials and textures) may be: inside the scene file's
+ * Where the files a scene refers to (OBJ meshes, their MTL files, textures) may be: inside the scene file's
  * folder tree, or a folder tree the user allowed ({@code --allow-path}, {@link SceneLoader#load(Path, List)}), after
  * following symbolic links. A scene file from a stranger must not read the machine's other files.
  *

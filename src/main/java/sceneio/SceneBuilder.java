@@ -5,16 +5,12 @@ import geometries.Geometries;
 import geometries.Geometry;
 import geometries.Instance;
 import geometries.Intersectable;
-import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Prototype;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.Tube;
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -27,9 +23,6 @@ import lighting.DirectionalLight;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
-import obj.ObjFormatException;
-import obj.ObjMesh;
-import obj.ObjReader;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Limits;
@@ -70,6 +63,7 @@ import sceneio.model.SceneDocument;
 import sceneio.model.SphereDocument;
 import sceneio.model.SpotLightDocument;
 import sceneio.model.SurfaceDocument;
+import sceneio.model.TextureDocument;
 import sceneio.model.TriangleDocument;
 import sceneio.model.TubeDocument;
 import sceneio.model.Vec3;
@@ -87,6 +81,12 @@ final class SceneBuilder {
     private final String file;
     /** Where referenced files may be: the scene's folder tree and what the user allowed. */
     private final FileConfinement confinement;
+    /** The files read besides the scene file, relative to its folder, each once. */
+    private final List<String> files = new ArrayList<>();
+    /** Each image file of the scene decoded once. */
+    private final TextureLoader textures;
+    /** Reads the OBJ meshes with their MTL files and textures. */
+    private final MeshLoader meshes;
 
     private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
@@ -106,6 +106,23 @@ final class SceneBuilder {
         this.file = file;
         this.text = text;
         this.confinement = new FileConfinement(baseDir, alsoAllowed);
+        this.textures = new TextureLoader(confinement, files);
+        this.meshes = new MeshLoader(file, confinement, textures, warnings, files, new MeshLoader.Context() {
+            @Override
+            public SceneFileException fail(JsonPath at, String problem, Throwable cause) {
+                return SceneBuilder.this.fail(at, problem, cause);
+            }
+
+            @Override
+            public Material material(JsonPath at, MaterialRef ref) throws SceneFileException {
+                return SceneBuilder.this.material(at, ref);
+            }
+
+            @Override
+            public Color color(JsonPath at, Vec3 value) throws SceneFileException {
+                return SceneBuilder.this.color(at, value);
+            }
+        });
     }
 
     LoadedScene build(SceneDocument d, String defaultName) throws SceneFileException {
@@ -148,7 +165,7 @@ final class SceneBuilder {
                 warnings.add("prototype \"" + prototype + "\" is defined but never placed");
         }
         Camera camera = camera(d, scene);
-        return new LoadedScene(d, scene, camera, warnings);
+        return new LoadedScene(d, scene, camera, warnings, files);
     }
 
     // ------------------------------------------------------------------ camera and render settings
@@ -339,7 +356,18 @@ final class SceneBuilder {
             core(at.field("indexOfRefraction"), () -> material.setIndexOfRefraction(m.indexOfRefraction()));
         }
         if (m.roughness() != null) core(at.field("roughness"), () -> material.setRoughness(m.roughness()));
+        if (m.kDMap() != null) material.setKdMap(texture(at.field("kDMap"), m.kDMap()));
         return material;
+    }
+
+    private primitives.Texture texture(JsonPath at, TextureDocument t) throws SceneFileException {
+        String name = required(at, "file", t.file());
+        try {
+            return textures.load(
+                    name, meshes.displayName(name), t.wrap() == null ? primitives.Texture.Wrap.REPEAT : t.wrap());
+        } catch (TextureLoader.TextureException e) {
+            throw fail(at.field("file"), e.getMessage(), e);
+        }
     }
 
     /** A coefficient, checked here because the core's range message would quote Double.MAX_VALUE. */
@@ -361,6 +389,7 @@ final class SceneBuilder {
 
     private Intersectable geometry(JsonPath at, GeometryDocument g) throws SceneFileException {
         if (g == null) throw fail(at, "null is not a geometry: give an object with a \"type\"");
+        if (g instanceof MeshDocument mesh) return meshes.load(at, mesh);
         if (g instanceof GroupDocument group) {
             return group(at.field("geometries"), required(at, "geometries", group.geometries()));
         }
@@ -369,6 +398,12 @@ final class SceneBuilder {
         SurfaceDocument surface = (SurfaceDocument) g;
         if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
+        if (geometry.getMaterial().getKdMap() != null) {
+            warnings.add(file + ": " + at + ": a "
+                    + g.getClass().getSimpleName().replace("Document", "").toLowerCase(java.util.Locale.ROOT)
+                    + " has no texture coordinates (only OBJ meshes with vt have them): its"
+                    + " texture (kDMap) shows one colour");
+        }
         return geometry;
     }
 
@@ -448,50 +483,13 @@ final class SceneBuilder {
             Ray axis = axis(at.field("axis"), required(at, "axis", t.axis()));
             return core(at.field("radius"), () -> new Tube(radius, axis));
         }
-        return mesh(at, (MeshDocument) g);
+        throw new IllegalStateException("meshes are loaded by MeshLoader");
     }
 
     private Ray axis(JsonPath at, AxisDocument a) throws SceneFileException {
         Point origin = point(at.field("origin"), required(at, "origin", a.origin()));
         Vector direction = vector(at.field("direction"), required(at, "direction", a.direction()));
         return new Ray(origin, direction);
-    }
-
-    private Mesh mesh(JsonPath at, MeshDocument m) throws SceneFileException {
-        JsonPath fileAt = at.field("file");
-        String name = required(at, "file", m.file());
-        // Resolved inside the allowed folders before anything is looked at (FileConfinement).
-        Path path = core(fileAt, () -> confinement.resolve("OBJ file", name));
-        if (!Files.exists(path, LinkOption.NOFOLLOW_LINKS)) {
-            throw fail(fileAt, "OBJ file \"" + name + "\" not found (looked for " + path + ")");
-        }
-        ObjMesh obj;
-        try {
-            obj = ObjReader.read(path, displayName(name));
-        } catch (ObjFormatException e) {
-            throw fail(fileAt, "OBJ file " + e.getMessage(), e);
-        }
-        warnings.addAll(obj.warnings());
-        double scale = m.scale() == null ? 1 : m.scale();
-        if (!(scale > 0)) throw fail(at.field("scale"), "scale must be positive, but was " + scale);
-        Vec3 t = m.translate() == null ? new Vec3(0, 0, 0) : m.translate();
-        double[] v = obj.vertices().clone();
-        for (int i = 0; i < v.length; i += 3) {
-            v[i] = v[i] * scale + t.x();
-            v[i + 1] = v[i + 1] * scale + t.y();
-            v[i + 2] = v[i + 2] * scale + t.z();
-        }
-        boolean smooth = m.smooth() == null || m.smooth();
-        return core(at, () -> new Mesh(v, obj.indices(), smooth ? obj.normals() : null));
-    }
-
-    /** An OBJ path as the user sees it: beside the scene file's name (e.g. scenes/models/cube.obj). */
-    private String displayName(String objPath) {
-        try {
-            return Path.of(file).resolveSibling(objPath).normalize().toString();
-        } catch (InvalidPathException e) {
-            return objPath;
-        }
     }
 
     // ------------------------------------------------------------------ values

@@ -176,6 +176,11 @@ public final class SceneExporter {
 
     /** A material used more than once becomes a named one; a material used once is written in place. */
     private MaterialRef material(Material m) {
+        if (m.getKdMap() != null) {
+            // The texels are in memory only: there is no image file to refer to.
+            throw new IllegalArgumentException("a material with a kD map (texture) cannot be written to a scene file:"
+                    + " reference the image from the scene file or an MTL file instead");
+        }
         MaterialDocument d = new MaterialDocument(
                 coefficient(m.getKa(), Double3.ONE),
                 coefficient(m.getKd(), null),

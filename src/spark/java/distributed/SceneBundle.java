@@ -16,17 +16,12 @@ import java.util.stream.Stream;
 import sceneio.LoadedScene;
 import sceneio.SceneFileException;
 import sceneio.SceneLoader;
-import sceneio.model.GeometryDocument;
-import sceneio.model.GroupDocument;
-import sceneio.model.MeshDocument;
 import sceneio.model.SceneDocument;
 
 /**
- * A scene file as it travels to the executors: its text, plus the bytes of the OBJ files it names by relative
- * path, so executors need no shared file system. It is broadcast once per executor, not sent with every task.
+ * A scene file as it travels to the executors: its text, plus the bytes of the files it references (OBJ meshes,
+ * their MTL files and textures, all by relative path), so executors need no shared file system. It is broadcast once per executor, not sent with every task.
  * Executors load it with {@link SceneLoader} exactly as the driver did, so they build the same scene.
- *
- * <p>OBJ files given by an absolute path are not bundled: they must exist at that path on every executor.
  */
 public final class SceneBundle implements Serializable {
     private static final long serialVersionUID = 1L;
@@ -36,9 +31,9 @@ public final class SceneBundle implements Serializable {
     private final RenderOverrides overrides;
     private final String sceneName;
     private final int width, height;
-    /** The scene file's folder, relative to the common folder of the scene and its OBJ files ("" if the same). */
+    /** The scene file's folder, relative to the common folder of the scene and the files it references ("" if the same). */
     private final String sceneFolder;
-    /** OBJ files by path relative to that common folder ('/'-separated), in the order the scene names them. */
+    /** Referenced files by path relative to that common folder ('/'-separated), in the order the scene read them. */
     private final LinkedHashMap<String, byte[]> files;
 
     private SceneBundle(
@@ -66,7 +61,7 @@ public final class SceneBundle implements Serializable {
     /**
      * Loads the scene file on the driver with the overrides applied, exactly as {@code raytracer render} does (so
      * a bad file fails here, with the CLI's message, before any task), and bundles its text, the overrides and the
-     * OBJ files. Executors apply the same overrides to the same text.
+     * files it references (OBJ, MTL, images). Executors apply the same overrides to the same text.
      */
     public static SceneBundle read(Path sceneFile, RenderOverrides overrides) throws SceneFileException {
         // All validation, with file:line:col messages: the CLI's calls, in the CLI's order.
@@ -79,12 +74,14 @@ public final class SceneBundle implements Serializable {
         }
         Path folder = sceneFile.toAbsolutePath().getParent();
         List<Path> objFiles = new ArrayList<>();
-        meshFiles(loaded.document().geometries(), folder, objFiles);
+        // Every file the loader read (OBJ, MTL, images), as the loader found them: relative to the scene's folder.
+        for (String reference : loaded.files())
+            objFiles.add(folder.resolve(reference).normalize());
         Path root = folder;
         for (Path obj : objFiles) {
             while (root != null && !obj.startsWith(root)) root = root.getParent();
         }
-        if (root == null) throw new IllegalStateException("the OBJ files share no folder with " + sceneFile);
+        if (root == null) throw new IllegalStateException("the referenced files share no folder with " + sceneFile);
         LinkedHashMap<String, byte[]> files = new LinkedHashMap<>();
         for (Path obj : objFiles) {
             try {
@@ -94,20 +91,6 @@ public final class SceneBundle implements Serializable {
             }
         }
         return new SceneBundle(sceneFile.toString(), loaded, text, overrides, slashes(root.relativize(folder)), files);
-    }
-
-    /** The OBJ files named by relative path in {@code geometries} and its groups, resolved against the folder. */
-    private static void meshFiles(List<GeometryDocument> geometries, Path folder, List<Path> out) {
-        if (geometries == null) return;
-        for (GeometryDocument g : geometries) {
-            if (g instanceof MeshDocument m
-                    && m.file() != null
-                    && !Path.of(m.file()).isAbsolute()) {
-                out.add(folder.resolve(m.file()).normalize());
-            } else if (g instanceof GroupDocument group) {
-                meshFiles(group.geometries(), folder, out);
-            }
-        }
     }
 
     private static String slashes(Path relative) {
@@ -139,12 +122,12 @@ public final class SceneBundle implements Serializable {
         return text;
     }
 
-    /** Paths of the bundled OBJ files, relative to the common folder of the scene and its OBJ files. */
+    /** Paths of the bundled files (OBJ, MTL, images), relative to the common folder of the scene and its files. */
     public List<String> objFiles() {
         return List.copyOf(files.keySet());
     }
 
-    /** Bytes that travel: the text's characters and the OBJ files. */
+    /** Bytes that travel: the text's characters and the referenced files. */
     public long size() {
         long size = text.length();
         for (byte[] b : files.values()) size += b.length;
@@ -158,7 +141,7 @@ public final class SceneBundle implements Serializable {
 
     /**
      * Loads the scene (on an executor), after {@code change} of its document, e.g. the camera moved to a frame's
-     * pose. The OBJ files are written to a temporary folder laid out as on the driver and deleted after loading.
+     * pose. The referenced files are written to a temporary folder laid out as on the driver and deleted after loading.
      */
     public LoadedScene load(UnaryOperator<SceneDocument> change) throws SceneFileException {
         SceneDocument document = change.apply(document());
@@ -174,7 +157,7 @@ public final class SceneBundle implements Serializable {
             }
             return SceneLoader.build(document, name, root.resolve(sceneFolder), text);
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write the scene's OBJ files to a temporary folder: " + e, e);
+            throw new UncheckedIOException("cannot write the scene's referenced files to a temporary folder: " + e, e);
         } finally {
             if (root != null) deleteQuietly(root);
         }

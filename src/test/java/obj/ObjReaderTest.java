@@ -60,13 +60,17 @@ class ObjReaderTest {
     }
 
     @Test
-    void textureIndicesAreAcceptedAndUnsupportedStatementsWarnOncePerKind() throws ObjFormatException {
+    void textureIndicesAreReadAndUnsupportedStatementsWarnOncePerKind() throws ObjFormatException {
         String text = "mtllib a.mtl\no cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\ng side\n"
                 + "usemtl red\ns 1\nf 1/1 2/2 3/3\nf 1/1/ 2/2/ 3/3/\n";
         ObjMesh mesh = ObjReader.parse("tex.obj", text);
         assertEquals(2, mesh.triangleCount());
-        assertEquals(6, mesh.warnings().size(), mesh.warnings().toString());
-        assertTrue(mesh.warnings().get(2).startsWith("tex.obj: skipped 3 'vt' statements (first at line 6)"));
+        assertArrayEquals(new double[] {0, 0, 1, 0, 0, 1}, mesh.texCoords());
+        assertEquals(4, mesh.warnings().size(), mesh.warnings().toString());
+        assertTrue(mesh.warnings().get(1).startsWith("tex.obj: skipped 1 'g' statement (first at line 9)"));
+        assertEquals(
+                "tex.obj: materials (mtllib, usemtl) are not applied here: all faces form one mesh",
+                mesh.warnings().get(3));
     }
 
     @Test
@@ -140,7 +144,7 @@ class ObjReaderTest {
 
     @Test
     void aMeshTooLargeForTheHeapStopsWithTheFiguresAtItsLine() throws ObjFormatException {
-        // 100,000 triangles need about 20 MB at 200 bytes each: with 5 MB to give, reading stops on the way.
+        // 100,000 triangles need about 22 MB at 216 bytes each: with 5 MB to give, reading stops on the way.
         String text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n".repeat(100_000);
         ObjFormatException e = assertThrows(
                 ObjFormatException.class, () -> ObjReader.read("big.obj", new StringReader(text), () -> 5_000_000));
@@ -149,8 +153,10 @@ class ObjReaderTest {
                 e.getReason().startsWith("the mesh needs about ")
                         && e.getReason().contains(" of memory to load and render by this line (")
                         && e.getReason()
-                                .contains(" triangles at 200 bytes, 3 vertices and normals at 100 bytes), but"
-                                        + " this JVM could give "),
+                                .contains(
+                                        " triangles at 216 bytes, 3 vertices, normals and texture coordinates at 100 bytes),"
+                                                + " but"
+                                                + " this JVM could give "),
                 e.getMessage());
         // With the heap to spare, the same text reads.
         assertEquals(

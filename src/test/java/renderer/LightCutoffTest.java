@@ -32,7 +32,7 @@ class LightCutoffTest {
 
     /** The scene files of scenes/, small. */
     static Stream<String> sceneFiles() {
-        return Stream.of("street", "showcase", "glass-and-mirror", "soft-shadows", "aa-edges");
+        return Stream.of("street", "showcase", "glass-and-mirror", "soft-shadows", "aa-edges", "textured-model");
     }
 
     @ParameterizedTest(name = "{0}")

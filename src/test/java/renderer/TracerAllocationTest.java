@@ -3,6 +3,7 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import geometries.Mesh;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
@@ -16,6 +17,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
+import primitives.Texture;
 import primitives.Vector;
 import renderer.sampling.SamplingConfig;
 import renderer.sampling.SamplingPattern;
@@ -61,7 +63,10 @@ class TracerAllocationTest {
         assertTrue(perRay < MOST_BYTES_PER_RAY, bytes + " bytes for " + rays + " rays: " + perRay + " bytes per ray");
     }
 
-    /** Soft and hard shadows, glass, a mirror and a glossy floor, anti-aliasing and depth of field: every path. */
+    /**
+     * Soft and hard shadows, glass, a mirror, a glossy floor and a textured mesh, anti-aliasing and depth of field:
+     * every path.
+     */
     private static Camera camera(boolean adaptive) {
         Scene scene = new Scene("every effect").setAmbientLight(new AmbientLight(new Color(20, 20, 25)));
         scene.geometries.add(
@@ -77,7 +82,17 @@ class TracerAllocationTest {
                 new Sphere(new Point(15, 10, 10), 10)
                         .setMaterial(new Material().setKd(0.6).setKs(0.3).setShininess(40)),
                 new Polygon(new Point(-60, 50, 0), new Point(60, 50, 0), new Point(60, 50, 50), new Point(-60, 50, 50))
-                        .setMaterial(new Material().setKd(0.1).setKr(0.7)));
+                        .setMaterial(new Material().setKd(0.1).setKr(0.7)),
+                // A textured mesh: the texture lookup and the texture coordinates' interpolation.
+                new Mesh(
+                                new double[] {-40, -30, 0.5, 0, -30, 0.5, 0, 10, 0.5, -40, 10, 0.5},
+                                new int[] {0, 1, 2, 0, 2, 3},
+                                null,
+                                new double[] {0, 0, 3, 0, 3, 3, 0, 3})
+                        .setMaterial(new Material()
+                                .setKd(0.8)
+                                .setKdMap(new Texture(
+                                        2, 2, new float[] {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, Texture.Wrap.MIRROR))));
         scene.lights.add(new PointLight(new Color(400, 380, 350), new Point(30, -40, 70))
                 .setKq(0.0001)
                 .setRadius(5)

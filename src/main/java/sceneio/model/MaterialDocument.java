@@ -14,8 +14,9 @@ import com.fasterxml.jackson.annotation.JsonPropertyOrder;
  * @param kT transparency
  * @param indexOfRefraction 0.001 to 1000
  * @param roughness 0 (ideal mirror and clear glass) to 1
+ * @param kDMap an image whose colour at the hit point multiplies kD (meshes with texture coordinates), or null
  */
-@JsonPropertyOrder({"kA", "kD", "kS", "shininess", "kR", "kT", "indexOfRefraction", "roughness"})
+@JsonPropertyOrder({"kA", "kD", "kS", "shininess", "kR", "kT", "indexOfRefraction", "roughness", "kDMap"})
 public record MaterialDocument(
         Coefficient kA,
         Coefficient kD,
@@ -24,4 +25,29 @@ public record MaterialDocument(
         Coefficient kR,
         Coefficient kT,
         Double indexOfRefraction,
-        Double roughness) {}
+        Double roughness,
+        TextureDocument kDMap) {
+    /**
+     * A material without a texture.
+     *
+     * @param kA ambient
+     * @param kD diffuse
+     * @param kS specular
+     * @param shininess specular exponent, an integer >= 0
+     * @param kR mirror reflection
+     * @param kT transparency
+     * @param indexOfRefraction 0.001 to 1000
+     * @param roughness 0 (ideal mirror and clear glass) to 1
+     */
+    public MaterialDocument(
+            Coefficient kA,
+            Coefficient kD,
+            Coefficient kS,
+            Integer shininess,
+            Coefficient kR,
+            Coefficient kT,
+            Double indexOfRefraction,
+            Double roughness) {
+        this(kA, kD, kS, shininess, kR, kT, indexOfRefraction, roughness, null);
+    }
+}
