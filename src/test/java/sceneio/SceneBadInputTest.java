@@ -66,7 +66,8 @@ class SceneBadInputTest {
     void unknownFieldsListWhatIsAllowed() {
         assertMessage(
                 "bad.json:4:14: $.render.widht: unknown field \"widht\"; allowed fields here: adaptiveShadows,"
-                        + " antiAliasing, bvh, glossySamples, height, lightCutoff, maxLevel, shadowPattern, threads, width",
+                        + " antiAliasing, bvh, glossySamples, height, lightCutoff, maxLevel, shadowPattern, targetError,"
+                        + " threads, timeBudget, width",
                 error(VALID.replace("\"width\": 4", "\"widht\": 4")));
         assertMessage(
                 "bad.json:6:5: $.geometries[0]: unknown geometry type \"sphear\"; allowed: sphere, plane, triangle,"
