@@ -25,13 +25,16 @@ import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
 import renderer.RayTracerType;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.TargetShape;
 import scene.Scene;
 
 /**
  * What instancing saves: a grove of the same tree (a 5,120-triangle crown on a trunk) placed {@code side x side}
  * times, turned and scaled at random, once as instances of one prototype and once as copies moved into place. Prints
  * the primitives stored, the search structure's bytes, the build time and the render time (median of the runs, one
- * warm-up render first) of each, and their ratios. {@code raytracer benchmark instancing [runs side]}.
+ * warm-up render first; 16 camera rays per pixel, one hard light) of each, and their ratios. {@code raytracer benchmark instancing [runs side]}.
  */
 public final class InstancingBenchmark {
     private static final int WIDTH = 480, HEIGHT = 300, THREADS = 2;
@@ -63,7 +66,7 @@ public final class InstancingBenchmark {
         int treePrimitives = new Prototype("tree", tree()).primitiveCount();
         System.out.printf(
                 Locale.ROOT,
-                "%d trees of %d primitives, %dx%d, %d threads, median of %d runs%n%n",
+                "%d trees of %d primitives, %dx%d, 16 HALTON camera rays per pixel, %d threads, median of %d runs%n%n",
                 placements.size(),
                 treePrimitives,
                 WIDTH,
@@ -71,16 +74,17 @@ public final class InstancingBenchmark {
                 THREADS,
                 runs);
         System.out.println(
-                "| scene | primitives stored | search structure | make + build | render (wall, with its build) | M rays/s |");
-        System.out.println("|---|---:|---:|---:|---:|---:|");
+                "| scene | primitives stored | search structure | make + build | render (wall, with its build) | tracing alone | M rays/s traced |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|");
         double[] a = measure("instances", instanced, runs), b = measure("copies", copied, runs);
         System.out.printf(
                 Locale.ROOT,
-                "| copies / instances | %.0fx | %.0fx | %.1fx | %.2fx | |%n",
+                "| copies / instances | %.0fx | %.0fx | %.1fx | %.2fx | %.2fx | |%n",
                 b[0] / a[0],
                 b[1] / a[1],
                 b[2] / a[2],
-                b[3] / a[3]);
+                b[3] / a[3],
+                b[4] / a[4]);
     }
 
     /**
@@ -88,7 +92,7 @@ public final class InstancingBenchmark {
      * own BVH included), and seconds of the render; prints the row.
      */
     private static double[] measure(String name, Supplier<Geometries> geometry, int runs) {
-        double[] builds = new double[runs], renders = new double[runs];
+        double[] builds = new double[runs], renders = new double[runs], traces = new double[runs];
         Accelerator search = null;
         double rays = 0;
         render(scene(geometry.get())); // warm-up: class loading and JIT
@@ -99,19 +103,21 @@ public final class InstancingBenchmark {
             builds[i] = (System.nanoTime() - start) * 1e-9;
             Camera camera = render(scene);
             renders[i] = camera.getLastStatistics().wallSeconds();
+            traces[i] = renders[i] - camera.getLastStatistics().preparationSeconds();
             rays = camera.getLastStatistics().rays().total();
         }
-        double build = median(builds), render = median(renders);
+        double build = median(builds), render = median(renders), trace = median(traces);
         System.out.printf(
                 Locale.ROOT,
-                "| %s | %,d | %.1f MB | %.3f s | %.3f s | %.2f |%n",
+                "| %s | %,d | %.1f MB | %.3f s | %.3f s | %.3f s | %.2f |%n",
                 name,
                 search.storedPrimitiveCount(),
                 search.bytes() / 1e6,
                 build,
                 render,
-                rays / render * 1e-6);
-        return new double[] {search.storedPrimitiveCount(), search.bytes(), build, render};
+                trace,
+                rays / trace * 1e-6);
+        return new double[] {search.storedPrimitiveCount(), search.bytes(), build, render, trace};
     }
 
     private static double median(double[] values) {
@@ -128,6 +134,7 @@ public final class InstancingBenchmark {
                 .setVpDistance(1)
                 .setVpSize(1.6, 1)
                 .setResolution(WIDTH, HEIGHT)
+                .setSamplingConfig(new SamplingConfig(16, TargetShape.RECTANGLE, SamplingPattern.HALTON))
                 .setRayTracer(scene, RayTracerType.SIMPLE)
                 .setThreads(THREADS)
                 .build();

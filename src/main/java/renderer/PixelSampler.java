@@ -98,14 +98,20 @@ final class PixelSampler {
         average.meanInto(ctx);
     }
 
+    /** Whether progressive samples spread over the pixel's area (anti-aliasing asked) or all go through its centre. */
+    boolean samplesArea() {
+        return antiAliasing.getSampleCount() > 1;
+    }
+
     /**
      * Sample {@code index} of half {@code half} (0 or 1) of pixel (x, y) for progressive sampling, into
      * {@code ctx.red, green, blue}: the Halton point of that index over the pixel, shifted by the half's own random
      * offset (Cranley-Patterson rotation), so that the two halves are independent low-discrepancy estimates of the
      * pixel. With anti-aliasing of one sample, every sample goes through the pixel's centre with effect samples
-     * (shadow, lens, glossy rays) of its own.
+     * (shadow, lens, glossy rays) of its own; {@code again} says that the previous sample this context took was of
+     * the same pixel, so that a pinhole camera's first hit can be reused.
      */
-    void progressiveSample(int x, int y, int half, int index, TraceContext ctx) {
+    void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
         long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
         long path = SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
         long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + half);
@@ -114,8 +120,10 @@ final class PixelSampler {
         try {
             if (antiAliasing.getSampleCount() == 1) {
                 // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the
-                // effects.
-                sample((x - (nX - 1) / 2.0) * pixelWidth, -(y - (nY - 1) / 2.0) * pixelHeight, path, ctx);
+                // effects; after the first, the pinhole's ray and its first hit are the same, and are reused.
+                double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
+                if (again && !lens) rayTracer.traceAgain(camera.rayThrough(u, v, ctx.ray), ctx, path);
+                else sample(u, v, path, ctx);
                 return;
             }
             areaSample(x, y, index, halfSeed, path, ctx);

@@ -30,10 +30,15 @@ final class ProgressiveSampler {
     private final int[] done, goal;
 
     private int passes;
+    /** Samples every pixel reaches first. */
+    private final int minimum;
 
     ProgressiveSampler(PixelSampler pixels, ProgressiveSettings settings, int nX, int nY) {
         this.pixels = pixels;
         this.settings = settings;
+        minimum = settings.minSamples() != ProgressiveSettings.AUTOMATIC
+                ? settings.minSamples()
+                : pixels.samplesArea() ? 16 : 4;
         this.nX = nX;
         this.nY = nY;
         int n = nX * nY;
@@ -42,7 +47,7 @@ final class ProgressiveSampler {
         goal = new int[n];
         // A budget starts small (4 samples, the fewest that estimate an error) so that a short budget is kept; a
         // target starts from the minimum, which keeps the estimates of flat-looking pixels from being chance zeros.
-        Arrays.fill(goal, settings.timeBudgetSeconds() > 0 ? FIRST_BUDGET_PASS / 2 : settings.minSamples() / 2);
+        Arrays.fill(goal, settings.timeBudgetSeconds() > 0 ? FIRST_BUDGET_PASS / 2 : minimum / 2);
     }
 
     /**
@@ -94,7 +99,7 @@ final class ProgressiveSampler {
         int o = 6 * p;
         for (int i = done[p], end = goal[p]; i < end; i++) {
             for (int half = 0; half < 2; half++) {
-                pixels.progressiveSample(x, y, half, i, ctx);
+                pixels.progressiveSample(x, y, half, i, i > done[p] || half > 0, ctx);
                 sums[o + 3 * half] += ctx.red;
                 sums[o + 3 * half + 1] += ctx.green;
                 sums[o + 3 * half + 2] += ctx.blue;
@@ -168,12 +173,16 @@ final class ProgressiveSampler {
         }
         mse /= variance.length;
         if (mse <= target * target) return 0;
-        // The predicted MSE falls as lambda grows: find the lambda that meets the target (or the most we may do).
+        // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
+        // (every pixel at most GROWTH times its samples), the least lambda that comes within 2% of the best this pass
+        // can do: beyond it, only pixels that look flat would take more samples, and they change little.
+        double reachable = 1.02 * predictedMse(mean, weight, Double.POSITIVE_INFINITY);
+        double goalMse = Math.max(target * target, reachable);
         double lo = 0, hi = 1;
-        while (predictedMse(mean, weight, hi) > target * target && hi < 1e30) hi *= 2;
+        while (predictedMse(mean, weight, hi) > goalMse && hi < 1e30) hi *= 2;
         for (int i = 0; i < 60; i++) {
             double mid = (lo + hi) / 2;
-            if (predictedMse(mean, weight, mid) > target * target) lo = mid;
+            if (predictedMse(mean, weight, mid) > goalMse) lo = mid;
             else hi = mid;
         }
         return setGoals(weight, hi);
@@ -185,7 +194,7 @@ final class ProgressiveSampler {
      */
     long planForSamples(long budget) {
         if (budget <= 0) return 0;
-        int floor = settings.minSamples() / 2;
+        int floor = minimum / 2;
         long toFloor = 0;
         for (int d : done) toFloor += 2L * Math.max(0, floor - d);
         if (toFloor > 0) {
@@ -270,7 +279,7 @@ final class ProgressiveSampler {
     /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
     private int halfGoal(double[] weight, double lambda, int p) {
         int max = Math.min(settings.maxSamples() / 2, GROWTH * done[p]);
-        double wanted = Math.ceil(lambda * weight[p] / 2);
+        double wanted = weight[p] > 0 ? Math.ceil(lambda * weight[p] / 2) : 0; // (infinity times 0 is NaN)
         return (int) Math.max(done[p], Math.min(max, wanted));
     }
 

@@ -6,7 +6,7 @@ import primitives.Limits;
  * Progressive sampling: instead of a fixed count of camera rays per pixel, the renderer measures its own error and
  * spends samples where the error is highest, until the image reaches a target error or the render a time budget.
  *
- * <p>Every pixel starts with {@code minSamples} samples from two independently shifted Halton sequences (half each)
+ * <p>Every pixel starts with its minimum of samples from two independently shifted Halton sequences (half each)
  * over the pixel's area, or, when the camera's anti-aliasing has one sample, all through the pixel's centre (then the
  * samples refine only the effects: soft shadows, depth of field, glossy surfaces);
  * the difference of the two halves' means estimates the pixel's error honestly, whatever the sampling pattern (it is
@@ -16,13 +16,15 @@ import primitives.Limits;
  *
  * @param targetError the image RMSE to reach, in display steps (0..255 scale), or 0 for none
  * @param timeBudgetSeconds the wall time to spend on the render, or 0 for none
- * @param minSamples samples every pixel starts with when a target error is asked: even, 4 to {@code maxSamples} (a time
- *     budget starts from 4 and spends the rest where the estimates are highest)
+ * @param minSamples samples every pixel starts with when a target error is asked: even, 4 to {@code maxSamples}, or
+ *     {@link #AUTOMATIC}: 16 over the pixel's area (edges need that many to be seen), 4 through its centre (a few
+ *     effect samples already tell a penumbra from light and shadow); a time budget starts from 4 and brings every
+ *     pixel to the minimum before spending the rest where the estimates are highest
  * @param maxSamples the most samples a pixel may receive, up to 1,048,576
  */
 public record ProgressiveSettings(double targetError, double timeBudgetSeconds, int minSamples, int maxSamples) {
-    /** Samples every pixel starts with unless told otherwise. */
-    public static final int DEFAULT_MIN_SAMPLES = 16;
+    /** The minimum samples chosen by the sampling: 16 over a pixel's area, 4 through its centre. */
+    public static final int AUTOMATIC = 0;
     /** The most samples a pixel receives unless told otherwise. */
     public static final int DEFAULT_MAX_SAMPLES = 4096;
 
@@ -45,13 +47,14 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
             throw new IllegalArgumentException("give exactly one of a target error and a time budget, but they were "
                     + targetError + " and " + timeBudgetSeconds + " s");
         }
-        if (minSamples < 4 || minSamples % 2 != 0) {
-            throw new IllegalArgumentException(
-                    "minimum samples must be even and at least 4 (two halves of 2), but was " + minSamples);
+        if (minSamples != AUTOMATIC && (minSamples < 4 || minSamples % 2 != 0)) {
+            throw new IllegalArgumentException("minimum samples must be even and at least 4 (two halves of 2), or 0"
+                    + " (automatic), but was " + minSamples);
         }
-        if (maxSamples < minSamples || maxSamples > Limits.MAX_SAMPLES) {
-            throw new IllegalArgumentException("maximum samples must be " + minSamples + " (the minimum) to "
-                    + Limits.MAX_SAMPLES + ", but was " + maxSamples);
+        int least = Math.max(minSamples, 16);
+        if (maxSamples < least || maxSamples > Limits.MAX_SAMPLES) {
+            throw new IllegalArgumentException(
+                    "maximum samples must be " + least + " to " + Limits.MAX_SAMPLES + ", but was " + maxSamples);
         }
     }
 
@@ -66,7 +69,7 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
             throw new IllegalArgumentException(
                     "target error must be in (0, 255] display steps, but was " + displaySteps);
         }
-        return new ProgressiveSettings(displaySteps, 0, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
+        return new ProgressiveSettings(displaySteps, 0, AUTOMATIC, DEFAULT_MAX_SAMPLES);
     }
 
     /**
@@ -79,13 +82,13 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
         if (!(seconds > 0 && seconds <= 1e7)) {
             throw new IllegalArgumentException("time budget must be in (0, 1e7] seconds, but was " + seconds);
         }
-        return new ProgressiveSettings(0, seconds, DEFAULT_MIN_SAMPLES, DEFAULT_MAX_SAMPLES);
+        return new ProgressiveSettings(0, seconds, AUTOMATIC, DEFAULT_MAX_SAMPLES);
     }
 
     /**
      * These settings with other sample bounds.
      *
-     * @param min samples every pixel starts with (even, at least 4)
+     * @param min samples every pixel starts with (even, at least 4), or {@link #AUTOMATIC}
      * @param max the most samples per pixel
      * @return the new settings
      */

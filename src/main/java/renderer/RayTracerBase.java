@@ -60,6 +60,19 @@ public abstract class RayTracerBase {
     public abstract void trace(Ray ray, TraceContext context, long pathSeed);
 
     /**
+     * As {@link #trace}, for a ray identical to the previous one this context traced (the same pixel centre again, in
+     * a progressive render): a tracer may reuse that ray's first hit and shade it with the new path's samples. The
+     * colour is the one {@link #trace} would give. By default it traces again.
+     *
+     * @param ray the same ray as the context's previous {@link #trace}
+     * @param context the calling thread's scratch state
+     * @param pathSeed the seed of this path's random numbers
+     */
+    public void traceAgain(Ray ray, TraceContext context, long pathSeed) {
+        trace(ray, context, pathSeed);
+    }
+
+    /**
      * The colour seen along {@code ray}: {@link #trace} returning a {@link Color}.
      *
      * @param ray the ray to trace

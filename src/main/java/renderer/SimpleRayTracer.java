@@ -104,6 +104,18 @@ public class SimpleRayTracer extends RayTracerBase {
         trace(ray, context, pathSeed, settings.maxLevel(), 1, 1, 1, true);
     }
 
+    /** Shades the first hit of the previous {@link #trace} again (kept in the first level's surface point). */
+    @Override
+    public void traceAgain(Ray ray, TraceContext context, long pathSeed) {
+        context.cutoffBudget = plan.lightCutoff;
+        int level = settings.maxLevel();
+        if (context.firstRayMissed) {
+            context.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
+            return;
+        }
+        shade(context.surface(level), ray.dx(), ray.dy(), ray.dz(), context, pathSeed, level, 1, 1, 1, true);
+    }
+
     /**
      * The colour along {@code ray} into {@code ctx.red, green, blue}. {@code kr, kg, kb} is the attenuation the
      * path has accumulated (the weight of this colour in the pixel).
@@ -119,7 +131,9 @@ public class SimpleRayTracer extends RayTracerBase {
         // rather than the previous ray's (which would make images depend on the ray order).
         hit.texU = 0;
         hit.texV = 0;
-        if (!accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit)) {
+        boolean found = accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit);
+        if (level == settings.maxLevel()) ctx.firstRayMissed = !found; // for traceAgain
+        if (!found) {
             ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
             return;
         }

@@ -47,6 +47,9 @@ public final class TraceContext {
      */
     int sequenceIndex = -1;
 
+    /** Whether the last primary ray traced missed everything (for {@link RayTracerBase#traceAgain}). */
+    boolean firstRayMissed;
+
     long sequenceSeed;
 
     /**
