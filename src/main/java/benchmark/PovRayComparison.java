@@ -1,0 +1,220 @@
+package benchmark;
+
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
+import renderer.Camera;
+import renderer.ProgressiveSettings;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.TargetShape;
+import sceneio.LoadedScene;
+import sceneio.SceneLoader;
+
+/**
+ * The soft-shadow comparison with POV-Ray 3.7 of docs/ACCURACY.md: {@code scenes/povray/soft-shadow.pov} and
+ * {@code .json}, 256 x 256, one camera ray per pixel, one thread. POV-Ray renders its adaptive, jittered circular
+ * area light at 3x3 to 17x17 lights (its own "Trace Time" and shadow-ray count) and a converged 33x33 reference; this
+ * library renders to target RMSEs 4, 2 and 1 with progressive sampling, timed as its command line prints it (a new
+ * JVM per render) and in a warm JVM (median of 5), and a converged reference (4,096 shadow rays per pixel). Each
+ * renderer is measured against its own reference, on the 8-bit images. Needs {@code povray} on the PATH;
+ * {@code raytracer benchmark povray [output folder]}.
+ */
+public final class PovRayComparison {
+    private static final Path SCENE = Path.of("scenes/povray/soft-shadow.json");
+    private static final Path POV = Path.of("scenes/povray/soft-shadow.pov");
+    private static final double[] TARGETS = {4, 2, 1};
+    private static final int[] POV_LIGHTS = {3, 5, 9, 17};
+
+    private PovRayComparison() {}
+
+    /**
+     * Runs the comparison and prints Markdown tables.
+     *
+     * @param args optionally the folder for the images (default {@code images/povray})
+     * @throws IOException if an image cannot be written or read, or POV-Ray cannot be run
+     * @throws InterruptedException if interrupted while POV-Ray runs
+     */
+    public static void main(String[] args) throws Exception {
+        Path out = Path.of(args.length > 0 ? args[0] : "images/povray");
+        Files.createDirectories(out);
+        System.out.println("POV-Ray (adaptive 1, jitter, circular orient; 1 thread), against its 33x33 reference:\n");
+        BufferedImage povReference = povray(out, 33, -1, 0).image;
+        System.out.println("| lights | shadow rays | trace time (s) | RMSE |\n|---:|---:|---:|---:|");
+        List<double[]> povCurve = new ArrayList<>();
+        for (int n : POV_LIGHTS) {
+            PovRun r = povray(out, n, 1, 1);
+            double error = rmse(r.image, povReference);
+            povCurve.add(new double[] {r.seconds, error});
+            System.out.printf(Locale.ROOT, "| %dx%d | %,d | %.3f | %.3f |%n", n, n, r.shadowRays, r.seconds, error);
+        }
+        BufferedImage reference = referenceImage(out);
+        System.out.println(
+                "\nThis library (progressive, 2 shadow rays per sample; 1 thread), against its reference:\n");
+        System.out.println(
+                "| target RMSE | measured RMSE | predicted | shadow rays | command-line time (s) | warm JVM (s) |"
+                        + " POV-Ray's time to that error (s) |\n|---:|---:|---:|---:|---:|---:|---:|");
+        for (double target : TARGETS) {
+            double cli = commandLineSeconds(target, out);
+            double[] warm = new double[5];
+            Camera camera = null;
+            for (int i = -1; i < warm.length; i++) { // one warm-up render
+                camera = progressive(target).renderImage();
+                if (i >= 0) warm[i] = camera.getLastStatistics().wallSeconds();
+            }
+            Arrays.sort(warm);
+            double error = rmse(camera.getImage().toBufferedImage(), reference);
+            System.out.printf(
+                    Locale.ROOT,
+                    "| %.0f | %.3f | %.3f | %,d | %.3f | %.3f | %s |%n",
+                    target,
+                    error,
+                    camera.getLastProgressiveReport().predictedError(),
+                    camera.getLastStatistics().rays().shadow,
+                    cli,
+                    warm[warm.length / 2],
+                    timeTo(povCurve, error));
+        }
+    }
+
+    private static Camera progressive(double target) throws Exception {
+        LoadedScene scene = SceneLoader.load(SCENE);
+        return scene.camera().setThreads(1).setProgressive(ProgressiveSettings.targetError(target));
+    }
+
+    /** 4,096 HALTON shadow rays per pixel in one beam, on every core. */
+    private static BufferedImage referenceImage(Path out) throws Exception {
+        String json =
+                Files.readString(SCENE, StandardCharsets.UTF_8).replace("\"samples\": 2 }", "\"samples\": 4096 }");
+        Camera camera =
+                SceneLoader.load(json, SCENE.toString(), SCENE.getParent()).camera();
+        camera.setThreads(Runtime.getRuntime().availableProcessors())
+                .setRenderSettings(camera.getRenderSettings().withShadowSampling(SamplingPattern.HALTON, false))
+                .setSamplingConfig(new SamplingConfig(1, TargetShape.RECTANGLE, SamplingPattern.HALTON));
+        BufferedImage image = camera.renderImage().getImage().toBufferedImage();
+        ImageIO.write(image, "png", out.resolve("ours-reference.png").toFile());
+        return image;
+    }
+
+    /** The render time the command line prints, for a render in a JVM of its own. */
+    private static double commandLineSeconds(double target, Path out) throws IOException, InterruptedException {
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(
+                        java,
+                        "--add-modules",
+                        "jdk.incubator.vector",
+                        "-cp",
+                        classPath(),
+                        "cli.RaytracerCli",
+                        "render",
+                        SCENE.toString(),
+                        "-o",
+                        out.resolve("ours-" + (int) target + ".png").toString(),
+                        "--threads",
+                        "1",
+                        "--target-error",
+                        String.valueOf(target))
+                .redirectErrorStream(true)
+                .start();
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        p.waitFor();
+        Matcher m = Pattern.compile("render: ([0-9.]+) s wall").matcher(text);
+        if (!m.find()) throw new IOException("no render time in the command line's output:\n" + text);
+        return Double.parseDouble(m.group(1));
+    }
+
+    /**
+     * The class path of this program: the loader's URLs under {@code mvn exec:java} (which loads the project in a
+     * class loader of its own), else the JVM's class path.
+     */
+    private static String classPath() {
+        if (Thread.currentThread().getContextClassLoader() instanceof java.net.URLClassLoader loader) {
+            StringBuilder path = new StringBuilder();
+            for (java.net.URL url : loader.getURLs()) {
+                try {
+                    if (path.length() > 0) path.append(File.pathSeparator);
+                    path.append(Path.of(url.toURI()));
+                } catch (java.net.URISyntaxException e) {
+                    throw new IllegalStateException("class path entry " + url + " is not a file", e);
+                }
+            }
+            if (path.length() > 0) return path.toString();
+        }
+        return System.getProperty("java.class.path");
+    }
+
+    private record PovRun(BufferedImage image, double seconds, long shadowRays) {}
+
+    private static PovRun povray(Path out, int lights, int adaptive, int jitter)
+            throws IOException, InterruptedException {
+        Path image = out.resolve("povray-" + lights + (adaptive < 0 ? "-reference" : "") + ".png");
+        ProcessBuilder povray = new ProcessBuilder(
+                        "povray",
+                        "-i" + POV,
+                        "+W256",
+                        "+H256",
+                        "+WT1",
+                        "-D",
+                        "+FN",
+                        "+O" + image,
+                        "Declare=N=" + lights,
+                        "Declare=A=" + adaptive,
+                        "Declare=J=" + jitter,
+                        "File_Gamma=1.0")
+                .redirectErrorStream(true);
+        Process p;
+        try {
+            p = povray.start();
+        } catch (IOException e) {
+            throw new IOException(
+                    "POV-Ray 3.7 must be on the PATH as 'povray' (Debian: apt-get install povray): " + e.getMessage(),
+                    e);
+        }
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        if (p.waitFor() != 0) throw new IOException("povray failed:\n" + text);
+        Matcher time = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)").matcher(text);
+        Matcher rays = Pattern.compile("Shadow Ray Tests:\\s+([0-9]+)").matcher(text);
+        if (!time.find() || !rays.find()) throw new IOException("no trace time in POV-Ray's output:\n" + text);
+        return new PovRun(
+                ImageIO.read(image.toFile()), Double.parseDouble(time.group(1)), Long.parseLong(rays.group(1)));
+    }
+
+    /** RMSE over pixels and channels of two 8-bit images (0..255 scale). */
+    static double rmse(BufferedImage a, BufferedImage b) {
+        double sum = 0;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                int p = a.getRGB(x, y), q = b.getRGB(x, y);
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    double d = ((p >> shift) & 255) - ((q >> shift) & 255);
+                    sum += d * d;
+                }
+            }
+        }
+        return Math.sqrt(sum / (3.0 * a.getWidth() * a.getHeight()));
+    }
+
+    /** POV-Ray's time to reach {@code error}, interpolated log-log on its time-error curve, or a bound. */
+    private static String timeTo(List<double[]> curve, double error) {
+        for (int i = 1; i < curve.size(); i++) {
+            double[] a = curve.get(i - 1), b = curve.get(i);
+            if (a[1] >= error && b[1] <= error) {
+                double f = Math.log(a[1] / error) / Math.log(a[1] / b[1]);
+                return String.format(Locale.ROOT, "%.3f", Math.exp(Math.log(a[0]) + f * Math.log(b[0] / a[0])));
+            }
+        }
+        return curve.get(0)[1] <= error
+                ? String.format(Locale.ROOT, "< %.3f", curve.get(0)[0])
+                : String.format(Locale.ROOT, "> %.3f", curve.get(curve.size() - 1)[0]);
+    }
+}
