@@ -74,6 +74,8 @@ final class Charts {
         }
         XYSeries equal = chart.addSeries("predicted = measured", new double[] {lo, hi}, new double[] {lo, hi});
         equal.setMarker(SeriesMarkers.NONE);
+        equal.setLineColor(Color.GRAY);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
         return BitmapEncoder.getBufferedImage(chart);
     }
 
