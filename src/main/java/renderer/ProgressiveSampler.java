@@ -180,7 +180,8 @@ final class ProgressiveSampler {
         double goalMse = Math.max(target * target, reachable);
         double lo = 0, hi = 1;
         while (predictedMse(mean, weight, hi) > goalMse && hi < 1e30) hi *= 2;
-        for (int i = 0; i < 60; i++) {
+        // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
+        while (hi - lo > 1e-3 * hi) {
             double mid = (lo + hi) / 2;
             if (predictedMse(mean, weight, mid) > goalMse) lo = mid;
             else hi = mid;
@@ -211,7 +212,7 @@ final class ProgressiveSampler {
         double[] weight = weights(sampleVariances(errors()));
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
-        for (int i = 0; i < 60; i++) {
+        while (hi - lo > 1e-3 * hi) {
             double mid = (lo + hi) / 2;
             if (extra(weight, mid) < budget) lo = mid;
             else hi = mid;

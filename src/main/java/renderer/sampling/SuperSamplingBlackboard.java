@@ -103,7 +103,15 @@ public final class SuperSamplingBlackboard {
         }
     }
 
+    /** The base-3 radical inverses of the first indices, which progressive beams read over and over. */
+    private static final double[] RADICAL_INVERSE_3 = new double[1 << 14];
+
+    static {
+        for (int i = 0; i < RADICAL_INVERSE_3.length; i++) RADICAL_INVERSE_3[i] = radicalInverse(3, i);
+    }
+
     private static double radicalInverse3(long i) {
+        if (i < RADICAL_INVERSE_3.length) return RADICAL_INVERSE_3[(int) i];
         double result = 0, factor = 1.0 / 3;
         while (i > 0) {
             result += (i % 3) * factor;
