@@ -31,6 +31,10 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
     /**
      * Checks the settings.
      *
+     * @param targetError the image RMSE to reach (display steps), or 0 for none
+     * @param timeBudgetSeconds the wall time to spend, or 0 for none
+     * @param minSamples samples every pixel starts with (even, at least 4), or {@link #AUTOMATIC}
+     * @param maxSamples the most samples a pixel may receive
      * @throws IllegalArgumentException if not exactly one of target error and time budget is positive, or the sample
      *     counts are out of range
      */
