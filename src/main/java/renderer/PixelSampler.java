@@ -112,37 +112,38 @@ final class PixelSampler {
      * the same pixel, so that a pinhole camera's first hit can be reused.
      */
     void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
-        long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
-        long path = SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
-        long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + half);
-        ctx.sequenceIndex = index;
-        ctx.sequenceSeed = halfSeed;
-        try {
-            if (antiAliasing.getSampleCount() == 1) {
-                // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the
-                // effects; after the first, the pinhole's ray and its first hit are the same, and are reused.
-                double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
-                if (again && !lens) rayTracer.traceAgain(camera.rayThrough(u, v, ctx.ray), ctx, path);
-                else sample(u, v, path, ctx);
-                return;
+        int pixel = y * nX + x;
+        if (ctx.progressivePixel != pixel) {
+            // Per pixel, not per sample: its seed and each half's seed and shift.
+            long pixelSeed = SampleStream.mix(seed, pixel);
+            ctx.progressivePixel = pixel;
+            ctx.progressivePixelSeed = pixelSeed;
+            for (int h = 0; h < 2; h++) {
+                long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + h);
+                SampleStream shift = ctx.random.reset(halfSeed);
+                ctx.halfSeeds[h] = halfSeed;
+                ctx.halfShifts[2 * h] = shift.nextDouble();
+                ctx.halfShifts[2 * h + 1] = shift.nextDouble();
             }
-            areaSample(x, y, index, halfSeed, path, ctx);
-        } finally {
-            ctx.sequenceIndex = -1;
         }
-    }
-
-    /** The progressive sample {@code index} over the pixel's area: the half's shifted Halton point. */
-    private void areaSample(int x, int y, int index, long halfSeed, long path, TraceContext ctx) {
-        SampleStream shift = ctx.random.reset(halfSeed);
-        double rx = shift.nextDouble(), ry = shift.nextDouble();
-        double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + rx;
-        double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + ry;
-        if (ox >= 1) ox -= 1;
-        if (oy >= 1) oy -= 1;
-        double u = (x - (nX - 1) / 2.0 + ox - 0.5) * pixelWidth;
-        double v = -(y - (nY - 1) / 2.0 + oy - 0.5) * pixelHeight;
-        sample(u, v, path, ctx);
+        long path = SampleStream.mix(ctx.progressivePixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
+        ctx.sequenceIndex = index;
+        ctx.sequenceSeed = ctx.halfSeeds[half];
+        double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
+        if (antiAliasing.getSampleCount() == 1) {
+            // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
+            // after the first, the pinhole's ray and its first hit are the same, and are reused.
+            if (again && !lens) rayTracer.traceAgain(camera.rayThrough(u, v, ctx.ray), ctx, path);
+            else sample(u, v, path, ctx);
+        } else {
+            // The half's shifted Halton point over the pixel's area.
+            double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + ctx.halfShifts[2 * half];
+            double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + ctx.halfShifts[2 * half + 1];
+            if (ox >= 1) ox -= 1;
+            if (oy >= 1) oy -= 1;
+            sample(u + (ox - 0.5) * pixelWidth, v - (oy - 0.5) * pixelHeight, path, ctx);
+        }
+        ctx.sequenceIndex = -1;
     }
 
     /**

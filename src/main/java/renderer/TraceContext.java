@@ -47,6 +47,13 @@ public final class TraceContext {
      */
     int sequenceIndex = -1;
 
+    /** The pixel whose progressive seeds follow (-1: none yet): its seed, and each half's seed and shift (x, y). */
+    int progressivePixel = -1;
+
+    long progressivePixelSeed;
+    final long[] halfSeeds = new long[2];
+    final double[] halfShifts = new double[4];
+
     /** Whether the last primary ray traced missed everything (for {@link RayTracerBase#traceAgain}). */
     boolean firstRayMissed;
 

@@ -107,7 +107,7 @@ public final class SuperSamplingBlackboard {
     private static final double[] RADICAL_INVERSE_3 = new double[1 << 14];
 
     static {
-        for (int i = 0; i < RADICAL_INVERSE_3.length; i++) RADICAL_INVERSE_3[i] = radicalInverse(3, i);
+        for (int i = 0; i < RADICAL_INVERSE_3.length; i++) RADICAL_INVERSE_3[i] = radicalInverseLoop(3, i);
     }
 
     private static double radicalInverse3(long i) {
@@ -213,6 +213,11 @@ public final class SuperSamplingBlackboard {
      * @return the radical inverse in [0, 1)
      */
     public static double radicalInverse(int base, int i) {
+        if (base == 3 && i < RADICAL_INVERSE_3.length) return RADICAL_INVERSE_3[i];
+        return radicalInverseLoop(base, i);
+    }
+
+    private static double radicalInverseLoop(int base, int i) {
         double inverseBase = 1.0 / base, factor = inverseBase, result = 0;
         while (i > 0) {
             result += (i % base) * factor;
