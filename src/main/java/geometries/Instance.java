@@ -31,6 +31,8 @@ public final class Instance implements Intersectable {
     private final double[] toWorld, toLocal;
 
     private final BoundingBox bounds;
+    /** Whether the transform only moves (its linear part is exactly the identity): rays keep their direction. */
+    private final boolean moveOnly;
 
     /**
      * Places {@code prototype} by {@code transform} (from the prototype's coordinates to the scene's).
@@ -44,6 +46,16 @@ public final class Instance implements Intersectable {
         toWorld = transform.toMatrix();
         toLocal = transform.toInverseMatrix();
         bounds = worldBounds(prototype.bounds, toWorld);
+        double[] m = toWorld;
+        moveOnly = m[0] == 1
+                && m[1] == 0
+                && m[2] == 0
+                && m[4] == 0
+                && m[5] == 1
+                && m[6] == 0
+                && m[8] == 0
+                && m[9] == 0
+                && m[10] == 1;
     }
 
     /**
@@ -221,6 +233,13 @@ public final class Instance implements Intersectable {
         az = i[10] * oz;
         double lz = ax + ay + az + i[11];
         double errZ = GAMMA3 * (Math.abs(ax) + Math.abs(ay) + Math.abs(az) + Math.abs(i[11]));
+        if (moveOnly) {
+            // The same direction: its constants are copied, and a scene distance is a local one.
+            inner.localScale = 1;
+            double shift = Math.abs(dx) * errX + Math.abs(dy) * errY + Math.abs(dz) * errZ;
+            local.setMoved(ray, lx + dx * shift, ly + dy * shift, lz + dz * shift);
+            return shift;
+        }
         double vx = i[0] * dx + i[1] * dy + i[2] * dz;
         double vy = i[4] * dx + i[5] * dy + i[6] * dz;
         double vz = i[8] * dx + i[9] * dy + i[10] * dz;
@@ -229,7 +248,7 @@ public final class Instance implements Intersectable {
         inner.localScale = Math.sqrt(vx * vx + vy * vy + vz * vz);
         double ux = local.dx(), uy = local.dy(), uz = local.dz();
         double shift = Math.abs(ux) * errX + Math.abs(uy) * errY + Math.abs(uz) * errZ;
-        if (shift > 0) local.set(lx + ux * shift, ly + uy * shift, lz + uz * shift, vx, vy, vz);
+        if (shift > 0) local.setMoved(local, lx + ux * shift, ly + uy * shift, lz + uz * shift);
         return shift;
     }
 

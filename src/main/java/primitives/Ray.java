@@ -76,6 +76,30 @@ public class Ray {
         shearZ = 1.0 / dirZ;
     }
 
+    /**
+     * Sets this ray to {@code other}'s direction, with all the constants derived from it copied rather than computed
+     * again, from a new origin (for {@link ReusableRay#setMoved}).
+     */
+    final void initMoved(Ray other, double ox, double oy, double oz) {
+        head = null;
+        direction = other.direction;
+        this.ox = ox;
+        this.oy = oy;
+        this.oz = oz;
+        dx = other.dx;
+        dy = other.dy;
+        dz = other.dz;
+        invDx = other.invDx;
+        invDy = other.invDy;
+        invDz = other.invDz;
+        kx = other.kx;
+        ky = other.ky;
+        kz = other.kz;
+        shearX = other.shearX;
+        shearY = other.shearY;
+        shearZ = other.shearZ;
+    }
+
     private double component(int axis) {
         return axis == 0 ? dx : axis == 1 ? dy : dz;
     }

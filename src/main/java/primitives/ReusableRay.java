@@ -44,4 +44,24 @@ public final class ReusableRay extends Ray {
     public ReusableRay set(Point origin, Vector direction) {
         return set(origin.x, origin.y, origin.z, direction.x, direction.y, direction.z);
     }
+
+    /**
+     * Points this ray along {@code ray}'s direction from another origin, copying the direction's derived constants
+     * (a translated copy of a ray costs no square root or division).
+     *
+     * @param ray the ray whose direction to take; not null
+     * @param ox the new origin's x, finite
+     * @param oy the new origin's y, finite
+     * @param oz the new origin's z, finite
+     * @return this ray
+     * @throws IllegalArgumentException if the origin is not finite
+     */
+    public ReusableRay setMoved(Ray ray, double ox, double oy, double oz) {
+        if (!(Double.isFinite(ox) && Double.isFinite(oy) && Double.isFinite(oz))) {
+            throw new IllegalArgumentException(
+                    "ray origin must be finite, but was (" + ox + ", " + oy + ", " + oz + ")");
+        }
+        initMoved(ray, ox, oy, oz);
+        return this;
+    }
 }
