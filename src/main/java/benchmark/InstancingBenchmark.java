@@ -157,7 +157,8 @@ public final class InstancingBenchmark {
         return new Geometries(
                 new Cylinder(0.25, new Ray(Point.ZERO, Vector.AXIS_Z), 2)
                         .setMaterial(new Material().setKd(0.5).setKs(0.1)),
-                moved(Meshes.icosphere(4), Transform.scale(1.2).then(Transform.translate(0, 0, 2.8)))
+                Meshes.icosphere(4)
+                        .transformed(Transform.scale(1.2).then(Transform.translate(0, 0, 2.8)))
                         .setMaterial(new Material().setKd(0.6).setKs(0.2).setShininess(20)));
     }
 
@@ -182,7 +183,7 @@ public final class InstancingBenchmark {
         for (var part : tree().getMembers()) {
             Geometry g = (Geometry) part;
             if (g instanceof Mesh mesh) {
-                copy.add(moved(mesh, t).setMaterial(g.getMaterial()));
+                copy.add(mesh.transformed(t));
             } else {
                 Cylinder c = (Cylinder) g;
                 copy.add(new Cylinder(
@@ -195,16 +196,5 @@ public final class InstancingBenchmark {
             }
         }
         return copy;
-    }
-
-    private static Mesh moved(Mesh mesh, Transform t) {
-        double[] v = mesh.getVertices();
-        for (int i = 0; i < v.length; i += 3) {
-            Point p = t.apply(new Point(v[i], v[i + 1], v[i + 2]));
-            v[i] = p.x;
-            v[i + 1] = p.y;
-            v[i + 2] = p.z;
-        }
-        return new Mesh(v, mesh.getIndices());
     }
 }

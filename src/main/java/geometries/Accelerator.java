@@ -350,12 +350,10 @@ public final class Accelerator implements Intersectable {
         if (bestTriangle >= 0) {
             hit.geometry = owners[bestTriangle];
             hit.part = parts[bestTriangle];
-            hit.instance = null;
-        } else if (bestObject >= 0 && !(objects[bestObject] instanceof Instance)) {
-            hit.instance = null; // an instance hit earlier in the search was not the closest
-        } else if (bestObject < 0) {
-            hit.instance = null; // unbounded geometry is never an instance
         }
+        // Only an instance marks the record: a triangle, another shape or unbounded geometry that ended closer than
+        // an instance hit earlier in the search clears the mark.
+        if (bestObject < 0 || !(objects[bestObject] instanceof Instance)) hit.instance = null;
         hit.primitiveIndex = best;
         return true;
     }

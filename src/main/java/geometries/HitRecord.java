@@ -145,6 +145,13 @@ public final class HitRecord {
         else geometry.completeHit(ray, this);
     }
 
+    /** Adds the node visits and primitive tests of {@code inner}'s last search to this record's, and clears them. */
+    void takeStatistics(HitRecord inner) {
+        nodeVisits += inner.nodeVisits;
+        primitiveTests += inner.primitiveTests;
+        inner.nodeVisits = inner.primitiveTests = 0;
+    }
+
     /** The record for searches inside an instance's prototype. */
     HitRecord inner() {
         HitRecord r = inner;

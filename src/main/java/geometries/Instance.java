@@ -46,16 +46,7 @@ public final class Instance implements Intersectable {
         toWorld = transform.toMatrix();
         toLocal = transform.toInverseMatrix();
         bounds = worldBounds(prototype.bounds, toWorld);
-        double[] m = toWorld;
-        moveOnly = m[0] == 1
-                && m[1] == 0
-                && m[2] == 0
-                && m[4] == 0
-                && m[5] == 1
-                && m[6] == 0
-                && m[8] == 0
-                && m[9] == 0
-                && m[10] == 1;
+        moveOnly = transform.isTranslation();
     }
 
     /**
@@ -105,9 +96,7 @@ public final class Instance implements Intersectable {
             found = search.intersect(local, from, localMax, inner);
             t = found ? (inner.t + shift) / scale : 0;
         }
-        hit.nodeVisits += inner.nodeVisits;
-        hit.primitiveTests += inner.primitiveTests;
-        inner.nodeVisits = inner.primitiveTests = 0;
+        hit.takeStatistics(inner);
         if (!found || !(t < tMax)) return false; // rounding at the far end
         hit.t = t;
         hit.geometry = inner.geometry;
@@ -129,9 +118,7 @@ public final class Instance implements Intersectable {
         boolean blocked = prototype
                 .search(scratch.withoutBvh)
                 .occludes(local, Math.max(0, tMin * scale - shift), tMax * scale - shift, inner);
-        scratch.nodeVisits += inner.nodeVisits;
-        scratch.primitiveTests += inner.primitiveTests;
-        inner.nodeVisits = inner.primitiveTests = 0;
+        scratch.takeStatistics(inner);
         return blocked;
     }
 
@@ -149,9 +136,7 @@ public final class Instance implements Intersectable {
         boolean passes = prototype
                 .search(scratch.withoutBvh)
                 .passesLight(inner.localRay, Math.max(0, tMin * scale - shift), tMax * scale - shift, inner);
-        scratch.nodeVisits += inner.nodeVisits;
-        scratch.primitiveTests += inner.primitiveTests;
-        inner.nodeVisits = inner.primitiveTests = 0;
+        scratch.takeStatistics(inner);
         if (!passes) return true;
         double r = inner.transmitR, g = inner.transmitG, b = inner.transmitB;
         if (r != 1 || g != 1 || b != 1) scratch.addTransparentHit(id, r, g, b);

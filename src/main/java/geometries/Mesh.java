@@ -2,6 +2,7 @@ package geometries;
 
 import primitives.Point;
 import primitives.Ray;
+import primitives.Transform;
 import primitives.Util;
 import primitives.Vector;
 
@@ -171,6 +172,40 @@ public class Mesh extends Geometry {
             moved[i + 2] = vertices[i + 2] * scale + dz;
         }
         Mesh mesh = new Mesh(moved, indices, normals, texCoords);
+        mesh.setMaterial(getMaterial()).setEmission(getEmission());
+        return mesh;
+    }
+
+    /**
+     * This mesh moved into place by {@code t}, with the same material and emission: what copying a model into a
+     * scene stores (an {@link Instance} places it without the copy). Vertices are mapped as
+     * {@link Transform#apply} maps points, normals by the inverse transpose.
+     *
+     * @param t the placement; not null
+     * @return a new mesh
+     */
+    public Mesh transformed(Transform t) {
+        Util.requireNonNull(t, "mesh transform");
+        double[] m = t.toMatrix();
+        double[] moved = new double[vertices.length];
+        for (int i = 0; i < moved.length; i += 3) {
+            double x = vertices[i], y = vertices[i + 1], z = vertices[i + 2];
+            for (int row = 0; row < 3; row++) {
+                moved[i + row] = m[4 * row] * x + m[4 * row + 1] * y + m[4 * row + 2] * z + m[4 * row + 3];
+            }
+        }
+        double[] turned = null;
+        if (normals != null) {
+            double[] inverse = t.toInverseMatrix();
+            turned = new double[normals.length];
+            for (int i = 0; i < turned.length; i += 3) {
+                double x = normals[i], y = normals[i + 1], z = normals[i + 2];
+                for (int col = 0; col < 3; col++) {
+                    turned[i + col] = inverse[col] * x + inverse[4 + col] * y + inverse[8 + col] * z;
+                }
+            }
+        }
+        Mesh mesh = new Mesh(moved, indices, turned, texCoords);
         mesh.setMaterial(getMaterial()).setEmission(getEmission());
         return mesh;
     }

@@ -1,5 +1,7 @@
 package obj;
 
+import static obj.Tokens.abbreviate;
+
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -428,16 +430,7 @@ public final class ObjReader {
     }
 
     private double number(String token, String keyword) throws ObjFormatException {
-        double value;
-        try {
-            value = Double.parseDouble(token);
-        } catch (NumberFormatException e) {
-            throw error("'" + keyword + "' value '" + abbreviate(token) + "' is not a number");
-        }
-        if (!Double.isFinite(value)) {
-            throw error("'" + keyword + "' value '" + abbreviate(token) + "' must be a finite number");
-        }
-        return value;
+        return Tokens.finite(token, keyword, file, lineNumber);
     }
 
     private void skip(String keyword) throws ObjFormatException {
@@ -490,10 +483,5 @@ public final class ObjReader {
 
     private ObjFormatException error(String reason) {
         return new ObjFormatException(file, lineNumber, reason);
-    }
-
-    /** Input quoted in a message: escaped (no terminal control sequences) and short. */
-    private static String abbreviate(String s) {
-        return primitives.Printable.of(s.length() <= 20 ? s : s.substring(0, 20) + "...");
     }
 }

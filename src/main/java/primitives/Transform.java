@@ -243,6 +243,23 @@ public final class Transform {
     }
 
     /**
+     * Whether this transform only moves: its linear part is exactly the identity (directions and lengths are kept).
+     *
+     * @return true for a pure translation (the identity included)
+     */
+    public boolean isTranslation() {
+        return m[0] == 1
+                && m[1] == 0
+                && m[2] == 0
+                && m[4] == 0
+                && m[5] == 1
+                && m[6] == 0
+                && m[8] == 0
+                && m[9] == 0
+                && m[10] == 1;
+    }
+
+    /**
      * The row-major 3 x 4 matrix (a copy).
      *
      * @return twelve numbers: three rows of the linear part and the translation

@@ -382,8 +382,7 @@ public class SimpleRayTracer extends RayTracerBase {
                 seed = SampleStream.mix(seed, 1);
             }
         }
-        if (ctx.sequenceIndex < 0
-                || !ctx.continueSequence(SampleStream.mix(SHADOW, li), count, TargetShape.CIRCLE, offsets)) {
+        if (!ctx.continueSequence(SHADOW, li, count, TargetShape.CIRCLE, offsets)) {
             SuperSamplingBlackboard.getSampleOffsets(
                     count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
         }
@@ -518,9 +517,7 @@ public class SimpleRayTracer extends RayTracerBase {
         if (maySplit) {
             count = glossy.getSampleCount();
             offsets = ctx.glossyOffsets(count);
-            if (ctx.sequenceIndex < 0
-                    || !ctx.continueSequence(
-                            SampleStream.mix(GLOSSY_SEQUENCE, level), count, TargetShape.CIRCLE, offsets)) {
+            if (!ctx.continueSequence(GLOSSY_SEQUENCE, level, count, TargetShape.CIRCLE, offsets)) {
                 SuperSamplingBlackboard.getSampleOffsets(
                         count, TargetShape.CIRCLE, glossy.getPattern(), ctx.random.reset(path), offsets);
             }

@@ -47,6 +47,8 @@ public final class TraceContext {
      */
     int sequenceIndex = -1;
 
+    long sequenceSeed;
+
     /** The pixel whose progressive seeds follow (-1: none yet): its seed, and each half's seed and shift (x, y). */
     int progressivePixel = -1;
 
@@ -57,7 +59,14 @@ public final class TraceContext {
     /** Whether the last primary ray traced missed everything (for {@link RayTracerBase#traceAgain}). */
     boolean firstRayMissed;
 
-    long sequenceSeed;
+    /**
+     * {@link #continueSequence(long, int, renderer.sampling.TargetShape, double[])} for the stream of {@code stream}
+     * and {@code part} (a light's index, a level), mixed only in a progressive render: other renders pay one
+     * comparison.
+     */
+    boolean continueSequence(long stream, long part, int count, renderer.sampling.TargetShape shape, double[] out) {
+        return sequenceIndex >= 0 && continueSequence(SampleStream.mix(stream, part), count, shape, out);
+    }
 
     /**
      * Fills {@code out} with beam {@code count} of the current sample's sequence for {@code stream} (a shifted

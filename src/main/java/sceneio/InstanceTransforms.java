@@ -65,16 +65,7 @@ final class InstanceTransforms {
     /** The document of a placement: {@code translate} alone when the transform only moves, else the matrix. */
     static InstanceDocument write(String prototype, Transform t) {
         double[] m = t.toMatrix();
-        boolean moveOnly = m[0] == 1
-                && m[1] == 0
-                && m[2] == 0
-                && m[4] == 0
-                && m[5] == 1
-                && m[6] == 0
-                && m[8] == 0
-                && m[9] == 0
-                && m[10] == 1;
-        if (moveOnly) return new InstanceDocument(prototype, null, null, new Vec3(m[3], m[7], m[11]), null);
+        if (t.isTranslation()) return new InstanceDocument(prototype, null, null, new Vec3(m[3], m[7], m[11]), null);
         List<Double> matrix = new java.util.ArrayList<>(12);
         for (double v : m) matrix.add(v);
         return new InstanceDocument(prototype, null, null, null, matrix);

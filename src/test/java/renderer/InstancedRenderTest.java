@@ -60,7 +60,7 @@ class InstancedRenderTest {
 
     private static Geometries prototypeParts() {
         return new Geometries(
-                moved(BALL, Transform.scale(0.45).then(Transform.translate(0, 0, 0.45)))
+                BALL.transformed(Transform.scale(0.45).then(Transform.translate(0, 0, 0.45)))
                         .setMaterial(SHINY),
                 new Cylinder(0.25, new Ray(new Point(0.6, 0, 0.05), Vector.AXIS_Z), 0.9).setMaterial(GLASS),
                 new Sphere(new Point(-0.55, 0.2, 0.3), 0.3).setMaterial(MIRROR));
@@ -136,7 +136,7 @@ class InstancedRenderTest {
             Geometry g = (Geometry) part;
             Geometry moved;
             if (g instanceof Mesh mesh) {
-                moved = moved(mesh, t);
+                moved = mesh.transformed(t);
             } else if (g instanceof Sphere s) {
                 moved = new Sphere(t.apply(s.getCenter()), s.getRadius() * scale);
             } else {
@@ -150,17 +150,6 @@ class InstancedRenderTest {
             copy.add(moved.setMaterial(g.getMaterial()));
         }
         return copy;
-    }
-
-    private static Mesh moved(Mesh mesh, Transform t) {
-        double[] v = mesh.getVertices();
-        for (int i = 0; i < v.length; i += 3) {
-            Point p = t.apply(new Point(v[i], v[i + 1], v[i + 2]));
-            v[i] = p.x;
-            v[i + 1] = p.y;
-            v[i + 2] = p.z;
-        }
-        return new Mesh(v, mesh.getIndices());
     }
 
     private static Scene scene(Geometries objects) {
