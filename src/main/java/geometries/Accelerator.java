@@ -63,7 +63,8 @@ public final class Accelerator implements Intersectable {
         boundedCount = n;
         double[] boxes = useBvh && n > 0 ? c.boxes() : null;
         long boxesDone = System.nanoTime();
-        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize) : null;
+        // Clear surfaces get a subtree of their own under the root, which shadow queries leave out.
+        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, c.clear) : null;
         long bvhDone = System.nanoTime();
         boxSeconds = (boxesDone - start) * 1e-9;
         bvhSeconds = (bvhDone - boxesDone) * 1e-9;
@@ -504,6 +505,8 @@ public final class Accelerator implements Intersectable {
             long visits = 1; // the root, as the statistics have always counted it
             int sp = 0;
             int link = bvh.rootLink, count = bvh.rootCount;
+            // The root's slots of clear surfaces only, left out of a shadow query (the first node visited).
+            int skip = honourTransparency ? bvh.secondGroupSlots : 0;
             boolean more = true; // no test of the root's own box, as in intersect
             try {
                 while (more) {
@@ -521,7 +524,8 @@ public final class Accelerator implements Intersectable {
                         visits += BVH.WIDTH;
                         // Any hit will do: no ordering, postpone every child hit but the first. (Taking the
                         // nearest first measured the same on the street's shadow rays, docs/BENCHMARKS.md.)
-                        int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries);
+                        int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries) & ~skip;
+                        skip = 0;
                         if (mask != 0) {
                             int c = Integer.numberOfTrailingZeros(mask);
                             link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);

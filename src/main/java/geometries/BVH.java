@@ -67,6 +67,11 @@ public final class BVH {
     final float[] rootBounds = new float[6];
 
     final int rootLink, rootCount;
+    /**
+     * With primitive groups ({@link #build(double[], int, int, boolean[])}): the position in the leaf order where the
+     * second group starts, else -1; and the slots of the root node whose subtrees hold only the second group.
+     */
+    final int secondGroupStart, secondGroupSlots;
     /** The primitives in leaf order: entry k is the original index of the k-th primitive. */
     final int[] order;
 
@@ -76,6 +81,7 @@ public final class BVH {
     private final int wideNodeCount;
 
     private BVH(BvhBuilder b) {
+        this.secondGroupStart = b.groupStart;
         this.binaryNodeCount = b.nodeCount;
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
@@ -85,6 +91,7 @@ public final class BVH {
         if (!rootIsLeaf) c.collapse(0);
         nodes = c.nodes;
         wideNodeCount = c.count;
+        secondGroupSlots = b.groupStart > 0 ? c.slotsFrom(b.data[0]) : 0;
         System.arraycopy(b.bounds, 0, rootBounds, 0, 6);
         rootLink = rootIsLeaf ? b.data[0] : 0;
         rootCount = rootIsLeaf ? b.data[1] : 0;
@@ -126,14 +133,14 @@ public final class BVH {
             children[n++] = binary + 1;
             children[n++] = b.data[2 * binary];
             while (n < WIDTH) {
-                // Open the interior child of largest surface area: it is the likeliest to be entered.
+                // Open the interior child with the most work below it.
                 int widest = -1;
-                double widestArea = -1;
+                double widestWeight = -1;
                 for (int i = 0; i < n; i++) {
                     if (isLeaf(b, children[i])) continue;
-                    double area = area(b, children[i]);
-                    if (area > widestArea) {
-                        widestArea = area;
+                    double weight = weight(b, children[i]);
+                    if (weight > widestWeight) {
+                        widestWeight = weight;
                         widest = i;
                     }
                 }
@@ -147,11 +154,30 @@ public final class BVH {
             return n;
         }
 
+        /** The binary nodes that became the root's children, slot by slot (filled by the root's collapse). */
+        private final int[] rootChildren = new int[WIDTH];
+
+        private int rootChildCount;
+
+        /**
+         * The mask of the root's slots whose binary subtrees lie at or after binary node {@code first} in
+         * depth-first order: for the root's second child, the slots holding only that child's primitives.
+         */
+        int slotsFrom(int first) {
+            int mask = 0;
+            for (int c = 0; c < rootChildCount; c++) if (rootChildren[c] >= first) mask |= 1 << c;
+            return mask;
+        }
+
         /** Writes the wide node that replaces binary interior node {@code binary}; returns its index. */
         int collapse(int binary) {
             int self = count++;
             int[] children = new int[WIDTH];
             int n = open(b, binary, children);
+            if (self == 0) {
+                System.arraycopy(children, 0, rootChildren, 0, n);
+                rootChildCount = n;
+            }
             int o = NODE_STRIDE * self;
             for (int c = 0; c < WIDTH; c++) {
                 if (c >= n) {
@@ -179,10 +205,16 @@ public final class BVH {
             return b.data[2 * binary + 1] > 0;
         }
 
-        private static double area(BvhBuilder b, int binary) {
+        /**
+         * What opening a child is worth: its box's surface area times its primitives, the SAH's estimate of the work
+         * below it. Area alone (Embree's choice) spends root slots on the few huge, far objects of a scene such as
+         * the street's moon and clouds, and leaves the street itself for the next level.
+         */
+        private static double weight(BvhBuilder b, int binary) {
             int o = 6 * binary;
-            return BvhBuilder.surfaceArea(
+            double area = BvhBuilder.surfaceArea(
                     b.bounds[o], b.bounds[o + 1], b.bounds[o + 2], b.bounds[o + 3], b.bounds[o + 4], b.bounds[o + 5]);
+            return area * b.primitivesBelow(binary);
         }
     }
 
@@ -206,6 +238,19 @@ public final class BVH {
      * the tests check.
      */
     static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean parallel) {
+        return build(primitiveBounds, bins, maxLeafSize, parallel, null);
+    }
+
+    /**
+     * {@link #build(double[], int, int)} with the primitives of {@code secondGroup} in a subtree of their own under
+     * the root (when some but not all are in it), which {@link #secondGroupSlots} names: a query that needs no
+     * primitive of the group skips that subtree at the root. Accelerator's shadow queries skip clear surfaces so.
+     */
+    static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean[] secondGroup) {
+        return build(primitiveBounds, bins, maxLeafSize, Runtime.getRuntime().availableProcessors() > 1, secondGroup);
+    }
+
+    static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
         if (primitiveBounds.length % 6 != 0) {
             throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
@@ -222,7 +267,7 @@ public final class BVH {
                 }
             }
         }
-        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel));
+        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup));
     }
 
     /** The largest float not above {@code x}. */

@@ -33,14 +33,87 @@ final class BvhBuilder {
     int leafCount;
     int maxDepthReached;
 
+    /**
+     * Where the tree's root divides the primitives into the two groups of {@link #BvhBuilder(double[], int, int,
+     * boolean, boolean[])}: the second group's first position in the leaf order, or -1 without groups.
+     */
+    int groupStart = -1;
+
     BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel) {
-        this(primBounds, identity(primBounds.length / 6), bins, maxLeafSize, primBounds.length / 6);
+        this(primBounds, bins, maxLeafSize, parallel, null);
+    }
+
+    /**
+     * Builds the tree; with {@code secondGroup} naming some but not all primitives, the root's two children are
+     * the trees of the other primitives and of those (each built as usual), so a query that needs only the first
+     * group can leave the second's subtree out.
+     */
+    BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
+        this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize, primBounds.length / 6);
         int n = index.length;
-        if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
+        int split = firstOfSecondGroup(n, secondGroup);
+        groupStart = split;
+        if (split > 0) {
+            // The forced root: its box and the two groups' trees, as the parallel build lays them out.
+            float[] box = new float[6];
+            measure(0, n, box);
+            List<Subtree> subtrees = new ArrayList<>();
+            Object left = parallel ? plan(0, split, 1, subtrees) : new Subtree(0, split, 1);
+            Object right = parallel ? plan(split, n, 1, subtrees) : new Subtree(split, n, 1);
+            if (!parallel) {
+                subtrees.add((Subtree) left);
+                subtrees.add((Subtree) right);
+            }
+            (parallel ? subtrees.parallelStream() : subtrees.stream()).forEach(Subtree::build);
+            maxDepthReached = 0;
+            emit(new Split(box, 0, left, right));
+        } else if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
             buildInParallel(n);
         } else if (n > 0) {
             build(0, n, 0);
         }
+    }
+
+    /**
+     * The primitives in order, those of the second group last (each group in its own order), when neither group is
+     * empty; otherwise in order.
+     */
+    private static int[] grouped(int n, boolean[] secondGroup) {
+        if (firstOfSecondGroup(n, secondGroup) < 0) return identity(n);
+        int[] index = new int[n];
+        int k = 0;
+        for (int i = 0; i < n; i++) if (!secondGroup[i]) index[k++] = i;
+        for (int i = 0; i < n; i++) if (secondGroup[i]) index[k++] = i;
+        return index;
+    }
+
+    /** The second group's first position in {@link #grouped} order, or -1 without groups or if one is empty. */
+    private static int firstOfSecondGroup(int n, boolean[] secondGroup) {
+        if (secondGroup == null) return -1;
+        int first = 0;
+        for (int i = 0; i < n; i++) if (!secondGroup[i]) first++;
+        return first > 0 && first < n ? first : -1;
+    }
+
+    /** The box of the primitives in {@code [start, end)}, rounded outward. */
+    private void measure(int start, int end, float[] box) {
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int k = start; k < end; k++) {
+            int o = 6 * index[k];
+            x0 = Math.min(x0, primBounds[o]);
+            y0 = Math.min(y0, primBounds[o + 1]);
+            z0 = Math.min(z0, primBounds[o + 2]);
+            x1 = Math.max(x1, primBounds[o + 3]);
+            y1 = Math.max(y1, primBounds[o + 4]);
+            z1 = Math.max(z1, primBounds[o + 5]);
+        }
+        box[0] = BVH.floatBelow(x0);
+        box[1] = BVH.floatBelow(y0);
+        box[2] = BVH.floatBelow(z0);
+        box[3] = BVH.floatAbove(x1);
+        box[4] = BVH.floatAbove(y1);
+        box[5] = BVH.floatAbove(z1);
     }
 
     /** A builder for a subtree over {@code primitives} primitives of a shared {@code index}. */
@@ -137,6 +210,27 @@ final class BvhBuilder {
         data[2 * node] = nodeCount;
         data[2 * node + 1] = -1 - split.axis();
         emit(split.right());
+    }
+
+    /** Primitives under each binary node, filled on first use by {@link #primitivesBelow}. */
+    private int[] below;
+
+    /**
+     * The number of primitives in binary node {@code node}'s subtree.
+     *
+     * @param node a node of the finished tree
+     * @return its primitive count
+     */
+    int primitivesBelow(int node) {
+        if (below == null) {
+            // Children follow their parents in depth-first order: one backward sweep sums every subtree.
+            below = new int[nodeCount];
+            for (int i = nodeCount - 1; i >= 0; i--) {
+                int count = data[2 * i + 1];
+                below[i] = count > 0 ? count : below[i + 1] + below[data[2 * i]];
+            }
+        }
+        return below[node];
     }
 
     private int allocateNode() {

@@ -355,4 +355,44 @@ class AcceleratorTest {
         assertTrue(both.passesLight(ray, 0, 20, scratch));
         assertEquals(0.25, scratch.transmitG, 0);
     }
+
+    /**
+     * Clear surfaces get a subtree of their own under the BVH's root, which shadow queries leave out: on random
+     * scenes of opaque triangles, tinted and clear spheres, every shadow query, occlusion query and closest hit
+     * through the BVH equals the brute-force scan bit for bit, and the clear subtree is there to be skipped.
+     */
+    @ParameterizedTest
+    @ValueSource(longs = {11, 12, 13})
+    void shadowQueriesSkipTheClearSubtreeWithTheSameAnswers(long seed) {
+        java.util.Random random = new java.util.Random(seed);
+        Geometries scene = new Geometries();
+        for (int i = 0; i < 300; i++) {
+            Point a = new Point(random.nextGaussian() * 20, random.nextGaussian() * 20, random.nextGaussian() * 20);
+            Point b = a.add(new Vector(random.nextDouble() * 3 + 0.1, random.nextDouble(), 0));
+            Point c = a.add(new Vector(0, random.nextDouble() * 3 + 0.1, random.nextDouble()));
+            scene.add(new Triangle(a, b, c));
+            if (i % 3 == 0) {
+                Sphere sphere = new Sphere(a.add(new Vector(0, 0, 4)), random.nextDouble() * 2 + 0.5);
+                sphere.setMaterial(new Material().setKt(i % 2 == 0 ? 1 : 0.7));
+                scene.add(sphere);
+            }
+        }
+        Accelerator bvh = Accelerator.build(scene, true), brute = Accelerator.build(scene, false);
+        assertTrue(bvh.getBvh().secondGroupSlots != 0, "the clear spheres have root slots of their own");
+        HitRecord withBvh = new HitRecord(), without = new HitRecord();
+        for (int i = 0; i < 3000; i++) {
+            Point from = new Point(random.nextGaussian() * 25, random.nextGaussian() * 25, random.nextGaussian() * 25);
+            Vector to = new Vector(random.nextGaussian(), random.nextGaussian(), random.nextGaussian());
+            Ray ray = new Ray(from, to);
+            double length = random.nextDouble() * 60;
+            boolean passes = bvh.passesLight(ray, 0, length, withBvh);
+            assertEquals(brute.passesLight(ray, 0, length, without), passes, "shadow ray " + i);
+            assertEquals(without.transmitR, withBvh.transmitR, 0, "transmittance of shadow ray " + i);
+            assertEquals(without.transmitB, withBvh.transmitB, 0, "transmittance of shadow ray " + i);
+            assertEquals(brute.occludes(ray, 0, length, without), bvh.occludes(ray, 0, length, withBvh));
+            boolean hit = bvh.intersect(ray, 0, length, withBvh.reset());
+            assertEquals(brute.intersect(ray, 0, length, without.reset()), hit, "closest hit of ray " + i);
+            if (hit) assertEquals(without.t, withBvh.t, 0);
+        }
+    }
 }

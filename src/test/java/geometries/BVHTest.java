@@ -134,6 +134,60 @@ class BVHTest {
         assertSameTree(BVH.build(boxes, 16, 4, false), BVH.build(boxes, 16, 4, true));
     }
 
+    /**
+     * A second group of primitives (the clear surfaces of Accelerator's shadow queries) gets root slots of its own:
+     * the primitives under the slots {@code secondGroupSlots} names are exactly the group, the parallel build gives
+     * the sequential tree, and an empty or full group builds the plain tree.
+     */
+    @ParameterizedTest
+    @ValueSource(longs = {4, 5})
+    void aSecondGroupHasRootSlotsOfItsOwn(long seed) {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(seed);
+        int n = 2 * BVH.PARALLEL_GRAIN + random.nextInt(BVH.PARALLEL_GRAIN);
+        double[] boxes = new double[6 * n];
+        boolean[] group = new boolean[n];
+        for (int p = 0; p < n; p++) {
+            group[p] = random.nextInt(7) == 0;
+            for (int a = 0; a < 3; a++) {
+                double lo = random.nextDouble() * 100;
+                boxes[6 * p + a] = lo;
+                boxes[6 * p + 3 + a] = lo + random.nextDouble() * (group[p] ? 20 : 2);
+            }
+        }
+        BVH sequential = BVH.build(boxes, 16, 4, false, group);
+        assertSameTree(sequential, BVH.build(boxes, 16, 4, true, group));
+        int slots = sequential.secondGroupSlots;
+        assertTrue(slots != 0, "the group has slots");
+        java.util.List<Integer> children = sequential.node(0).children();
+        for (int c = 0; c < children.size(); c++) {
+            boolean inGroup = (slots >> c & 1) != 0;
+            for (int p : primitivesUnder(sequential, children.get(c))) {
+                assertEquals(inGroup, group[p], "primitive " + p + " under root slot " + c);
+            }
+        }
+        BVH plain = BVH.build(boxes, 16, 4, false);
+        assertSameTree(plain, BVH.build(boxes, 16, 4, false, new boolean[n]));
+        boolean[] all = new boolean[n];
+        java.util.Arrays.fill(all, true);
+        assertSameTree(plain, BVH.build(boxes, 16, 4, false, all));
+        assertEquals(0, plain.secondGroupSlots);
+    }
+
+    private static java.util.List<Integer> primitivesUnder(BVH bvh, int node) {
+        java.util.List<Integer> list = new java.util.ArrayList<>();
+        java.util.List<BVHNode> nodes = bvh.nodes();
+        java.util.ArrayDeque<Integer> todo = new java.util.ArrayDeque<>(java.util.List.of(node));
+        while (!todo.isEmpty()) {
+            BVHNode n = nodes.get(todo.pop());
+            if (n.isLeaf()) {
+                for (int k = 0; k < n.primitiveCount(); k++) list.add(bvh.primitiveAt(n.firstPrimitive() + k));
+            } else {
+                todo.addAll(n.children());
+            }
+        }
+        return list;
+    }
+
     private static void assertSameTree(BVH sequential, BVH parallel) {
         assertArrayEquals(sequential.nodes, parallel.nodes);
         assertArrayEquals(sequential.order, parallel.order);
