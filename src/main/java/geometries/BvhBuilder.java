@@ -54,9 +54,7 @@ final class BvhBuilder {
         int split = firstOfSecondGroup(n, secondGroup);
         groupStart = split;
         if (split > 0) {
-            // The forced root: its box and the two groups' trees, as the parallel build lays them out.
-            float[] box = new float[6];
-            measure(0, n, box);
+            // The forced root over the two groups' trees, laid out as the parallel build lays out its top.
             List<Subtree> subtrees = new ArrayList<>();
             Object left = parallel ? plan(0, split, 1, subtrees) : new Subtree(0, split, 1);
             Object right = parallel ? plan(split, n, 1, subtrees) : new Subtree(split, n, 1);
@@ -65,7 +63,12 @@ final class BvhBuilder {
                 subtrees.add((Subtree) right);
             }
             (parallel ? subtrees.parallelStream() : subtrees.stream()).forEach(Subtree::build);
-            maxDepthReached = 0;
+            float[] box = boxOf(left).clone(), other = boxOf(right);
+            // Minima and maxima of boxes already rounded outward: the box of the union, rounded outward.
+            for (int a = 0; a < 3; a++) {
+                box[a] = Math.min(box[a], other[a]);
+                box[3 + a] = Math.max(box[3 + a], other[3 + a]);
+            }
             emit(new Split(box, 0, left, right));
         } else if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
             buildInParallel(n);
@@ -95,25 +98,10 @@ final class BvhBuilder {
         return first > 0 && first < n ? first : -1;
     }
 
-    /** The box of the primitives in {@code [start, end)}, rounded outward. */
-    private void measure(int start, int end, float[] box) {
-        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
-        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-        for (int k = start; k < end; k++) {
-            int o = 6 * index[k];
-            x0 = Math.min(x0, primBounds[o]);
-            y0 = Math.min(y0, primBounds[o + 1]);
-            z0 = Math.min(z0, primBounds[o + 2]);
-            x1 = Math.max(x1, primBounds[o + 3]);
-            y1 = Math.max(y1, primBounds[o + 4]);
-            z1 = Math.max(z1, primBounds[o + 5]);
-        }
-        box[0] = BVH.floatBelow(x0);
-        box[1] = BVH.floatBelow(y0);
-        box[2] = BVH.floatBelow(z0);
-        box[3] = BVH.floatAbove(x1);
-        box[4] = BVH.floatAbove(y1);
-        box[5] = BVH.floatAbove(z1);
+    /** The rounded box of a planned node: a split's own, or a built subtree's root's. */
+    private static float[] boxOf(Object planned) {
+        if (planned instanceof Split split) return split.box();
+        return Arrays.copyOf(((Subtree) planned).builder.bounds, 6);
     }
 
     /** A builder for a subtree over {@code primitives} primitives of a shared {@code index}. */
