@@ -16,14 +16,15 @@ import primitives.Limits;
  *
  * @param targetError the image RMSE to reach, in display steps (0..255 scale), or 0 for none
  * @param timeBudgetSeconds the wall time to spend on the render, or 0 for none
- * @param minSamples samples every pixel starts with when a target error is asked: even, 4 to {@code maxSamples}, or
- *     {@link #AUTOMATIC}: 16 over the pixel's area (edges need that many to be seen), 4 through its centre (a few
- *     effect samples already tell a penumbra from light and shadow); a time budget starts from 4 and brings every
+ * @param minSamples samples every pixel starts with when a target error is asked: even, 2 to {@code maxSamples}, or
+ *     {@link #AUTOMATIC}: 16 over the pixel's area (edges need that many to be seen), 2 through its centre (one per
+ *     half: where both halves' effect samples agree exactly, in full light or full shadow, the pixel is done, and a
+ *     penumbra shows as a disagreement in the pixel or in a neighbour); a time budget starts from 4 and brings every
  *     pixel to the minimum before spending the rest where the estimates are highest
  * @param maxSamples the most samples a pixel may receive, up to 1,048,576
  */
 public record ProgressiveSettings(double targetError, double timeBudgetSeconds, int minSamples, int maxSamples) {
-    /** The minimum samples chosen by the sampling: 16 over a pixel's area, 4 through its centre. */
+    /** The minimum samples chosen by the sampling: 16 over a pixel's area, 2 through its centre. */
     public static final int AUTOMATIC = 0;
     /** The most samples a pixel receives unless told otherwise. */
     public static final int DEFAULT_MAX_SAMPLES = 4096;
@@ -33,7 +34,7 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
      *
      * @param targetError the image RMSE to reach (display steps), or 0 for none
      * @param timeBudgetSeconds the wall time to spend, or 0 for none
-     * @param minSamples samples every pixel starts with (even, at least 4), or {@link #AUTOMATIC}
+     * @param minSamples samples every pixel starts with (even, at least 2), or {@link #AUTOMATIC}
      * @param maxSamples the most samples a pixel may receive
      * @throws IllegalArgumentException if not exactly one of target error and time budget is positive, or the sample
      *     counts are out of range
@@ -51,8 +52,8 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
             throw new IllegalArgumentException("give exactly one of a target error and a time budget, but they were "
                     + targetError + " and " + timeBudgetSeconds + " s");
         }
-        if (minSamples != AUTOMATIC && (minSamples < 4 || minSamples % 2 != 0)) {
-            throw new IllegalArgumentException("minimum samples must be even and at least 4 (two halves of 2), or 0"
+        if (minSamples != AUTOMATIC && (minSamples < 2 || minSamples % 2 != 0)) {
+            throw new IllegalArgumentException("minimum samples must be even and at least 2 (two halves of 1), or 0"
                     + " (automatic), but was " + minSamples);
         }
         int least = Math.max(minSamples, 16);
@@ -92,7 +93,7 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
     /**
      * These settings with other sample bounds.
      *
-     * @param min samples every pixel starts with (even, at least 4), or {@link #AUTOMATIC}
+     * @param min samples every pixel starts with (even, at least 2), or {@link #AUTOMATIC}
      * @param max the most samples per pixel
      * @return the new settings
      */

@@ -69,6 +69,48 @@ class ProgressiveSamplingTest {
         assertEquals(report.samples(), c.getLastStatistics().rays().camera, "every sample is one camera ray");
     }
 
+    /**
+     * The same honesty where every sample goes through the pixel's centre (one camera ray per pixel: only the soft
+     * shadows are refined) and a pixel starts from one sample per half: the POV-Ray comparison's scene, measured
+     * against its own render with 2,048 stratified shadow rays per pixel.
+     */
+    @ParameterizedTest(name = "target RMSE {0}")
+    @MethodSource("targets")
+    void aCentreSampledRenderFromOneSamplePerHalfLandsNearItsTarget(double target) throws Exception {
+        Camera c = centreSampled().camera().setProgressive(ProgressiveSettings.targetError(target));
+        ImageWriter image = c.renderImage().getImage();
+        ProgressiveReport report = c.getLastProgressiveReport();
+        double measured = rmse(image, centreReference());
+        System.out.printf("centre, target %.2f: measured %.3f, %s%n", target, measured, report.describe());
+        assertEquals(2, report.minSamples(), "one sample per half to start with");
+        assertTrue(measured <= 1.25 * target, "measured RMSE " + measured + " for target " + target);
+        assertTrue(
+                Math.abs(report.predictedError() - measured) <= 0.25 * measured,
+                "predicted " + report.predictedError() + ", measured " + measured);
+    }
+
+    private ImageWriter centreReference;
+
+    private ImageWriter centreReference() throws Exception {
+        if (centreReference == null) {
+            LoadedScene loaded = centreSampled();
+            for (lighting.LightSource light : loaded.scene().lights) {
+                if (light instanceof lighting.PointLight point && point.isSoft()) point.setNumSamples(2048);
+            }
+            Camera c = loaded.camera();
+            c.setRenderSettings(c.getRenderSettings().withShadowSampling(SamplingPattern.JITTERED, false));
+            centreReference = c.renderImage().getImage();
+        }
+        return centreReference;
+    }
+
+    private static LoadedScene centreSampled() throws Exception {
+        String json = Files.readString(Path.of("scenes/povray/soft-shadow.json"))
+                .replace("\"width\": 256", "\"width\": 96")
+                .replace("\"height\": 256", "\"height\": 96");
+        return SceneLoader.load(json, "soft-shadow.json", Path.of("scenes/povray"));
+    }
+
     @Test
     void theSamplesAreTheSameForAnyThreadsAndWithoutTheBvh() throws Exception {
         Camera two = camera().setProgressive(ProgressiveSettings.targetError(1)).setThreads(2);
