@@ -23,8 +23,9 @@ import java.util.List;
  * between bins that minimises {@code 1 + (nL aL + nR aR) / a} is taken unless a leaf (cost {@code n}) is cheaper
  * and small enough. Nodes whose centroids coincide are halved by count so leaves stay bounded. The binary tree is
  * then collapsed: a wide node starts from a binary node's two children and repeatedly replaces the interior child
- * of largest surface area by its two children until it has eight. The traversal lives in {@link Accelerator},
- * next to the primitive data it tests.
+ * with the most work below it (surface area times primitives) by its two children until it has eight. A build may
+ * give a group of primitives (Accelerator's clear surfaces) a subtree of its own under the root, which
+ * {@link #secondGroupSlots} names. The traversal lives in {@link Accelerator}, next to the primitive data it tests.
  */
 public final class BVH {
     /** Deepest node level of the binary tree (and so of the wide tree); the traversal stack is sized from it. */
@@ -68,10 +69,10 @@ public final class BVH {
 
     final int rootLink, rootCount;
     /**
-     * With primitive groups ({@link #build(double[], int, int, boolean[])}): the position in the leaf order where the
-     * second group starts, else -1; and the slots of the root node whose subtrees hold only the second group.
+     * With primitive groups ({@link #build(double[], int, int, boolean[])}): the slots of the root node whose subtrees
+     * hold only the second group (a bit per slot), else 0.
      */
-    final int secondGroupStart, secondGroupSlots;
+    final int secondGroupSlots;
     /** The primitives in leaf order: entry k is the original index of the k-th primitive. */
     final int[] order;
 
@@ -81,7 +82,6 @@ public final class BVH {
     private final int wideNodeCount;
 
     private BVH(BvhBuilder b) {
-        this.secondGroupStart = b.groupStart;
         this.binaryNodeCount = b.nodeCount;
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
