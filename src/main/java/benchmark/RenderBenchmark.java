@@ -143,10 +143,22 @@ public final class RenderBenchmark {
         }
         Map<String, Row> before = baseline == null ? Map.of() : read(baseline);
         if (images != null) {
-            Files.createDirectories(images);
             if (images.toAbsolutePath().toString().contains(",")) {
                 throw new IllegalArgumentException("--images " + images + ": the folder's path must not contain ','");
             }
+            Path folder = images.toAbsolutePath().normalize();
+            for (Row old : before.values()) {
+                // This run would overwrite the baseline's images and then find every image identical to itself.
+                if (!old.image().isEmpty()
+                        && folder.equals(Path.of(old.image())
+                                .toAbsolutePath()
+                                .normalize()
+                                .getParent())) {
+                    throw new IllegalArgumentException("--images " + images + ": the baseline " + baseline
+                            + " keeps its images in this folder; give this run another one");
+                }
+            }
+            Files.createDirectories(images);
         }
 
         for (String name : only) {

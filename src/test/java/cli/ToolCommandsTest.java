@@ -36,6 +36,22 @@ class ToolCommandsTest {
         assertTrue(err.toString().contains("--baseline no-such.csv: no such file"), err.toString());
     }
 
+    /** A run that would write its images over the baseline's (and compare each with itself) is refused. */
+    @Test
+    void renderBenchmarkRefusesToWriteOverTheBaselinesImages(@TempDir Path dir) throws Exception {
+        Path images = dir.resolve("base-img");
+        Path csv = dir.resolve("base.csv");
+        String header = "scenario,wall_s,cpu_s,camera,shadow,reflection,refraction,node_visits,primitive_tests,"
+                + "bytes_per_ray,image";
+        Files.writeString(
+                csv, header + "\n" + "street-hard/1T,0.5,0.5,1,1,1,1,1,1,0," + images.resolve("a.png") + "\n");
+        assertEquals(
+                ExitCodes.BAD_INPUT,
+                run("benchmark", "render", "--baseline", csv.toString(), "--images", images.toString()));
+        assertTrue(
+                err.toString().contains("keeps its images in this folder; give this run another one"), err.toString());
+    }
+
     @Test
     void malformedBenchmarkArgumentsAreBadInput() {
         assertEquals(ExitCodes.BAD_INPUT, run("benchmark", "planning", "many"));
