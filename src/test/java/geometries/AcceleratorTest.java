@@ -395,4 +395,30 @@ class AcceleratorTest {
             if (hit) assertEquals(without.t, withBvh.t, 0);
         }
     }
+
+    /**
+     * The clear subtree is left out at the root, not only its leaves: a shadow ray that crosses nothing but clear
+     * spheres tests the root's child boxes and nothing below them (the opaque triangles lie beyond its end).
+     */
+    @Test
+    void aShadowRayThroughClearSurfacesOnlyStopsAtTheRoot() {
+        Geometries scene = new Geometries();
+        for (int i = 0; i < 50; i++) {
+            double y = i - 25;
+            scene.add(new Triangle(new Point(100, y, 0), new Point(101, y + 1, 0), new Point(100, y, 1)));
+        }
+        for (int i = 0; i < 30; i++) {
+            Sphere sphere = new Sphere(new Point(i * 0.5, (i % 3) - 1, 0), 0.4);
+            sphere.setMaterial(new Material().setKt(1));
+            scene.add(sphere);
+        }
+        Accelerator accelerator = Accelerator.build(scene, true);
+        HitRecord scratch = new HitRecord();
+        assertTrue(accelerator.passesLight(new Ray(new Point(-5, 0, 0), new Vector(1, 0, 0)), 0, 20, scratch));
+        assertEquals(1 + BVH.WIDTH, scratch.nodeVisits, "the root's child boxes only");
+        assertEquals(0, scratch.primitiveTests);
+        HitRecord any = new HitRecord();
+        assertTrue(accelerator.occludes(new Ray(new Point(-5, 0, 0), new Vector(1, 0, 0)), 0, 20, any));
+        assertTrue(any.nodeVisits > 1 + BVH.WIDTH, "an occlusion query still searches the clear spheres");
+    }
 }
