@@ -91,7 +91,7 @@ public final class BVH {
         if (!rootIsLeaf) c.collapse(0);
         nodes = c.nodes;
         wideNodeCount = c.count;
-        secondGroupSlots = b.groupStart > 0 ? c.slotsFrom(b.data[0]) : 0;
+        secondGroupSlots = b.grouped ? c.slotsFrom(b.data[0]) : 0;
         System.arraycopy(b.bounds, 0, rootBounds, 0, 6);
         rootLink = rootIsLeaf ? b.data[0] : 0;
         rootCount = rootIsLeaf ? b.data[1] : 0;

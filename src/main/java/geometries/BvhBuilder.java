@@ -34,14 +34,10 @@ final class BvhBuilder {
     int maxDepthReached;
 
     /**
-     * Where the tree's root divides the primitives into the two groups of {@link #BvhBuilder(double[], int, int,
-     * boolean, boolean[])}: the second group's first position in the leaf order, or -1 without groups.
+     * Whether the root divides the primitives into the two groups of {@link #BvhBuilder(double[], int, int, boolean,
+     * boolean[])}: its first child holds the first group, its second child the second.
      */
-    int groupStart = -1;
-
-    BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel) {
-        this(primBounds, bins, maxLeafSize, parallel, null);
-    }
+    boolean grouped;
 
     /**
      * Builds the tree; with {@code secondGroup} naming some but not all primitives, the root's two children are
@@ -52,8 +48,8 @@ final class BvhBuilder {
         this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize, primBounds.length / 6);
         int n = index.length;
         int split = firstOfSecondGroup(n, secondGroup);
-        groupStart = split;
-        if (split > 0) {
+        grouped = split > 0;
+        if (grouped) {
             // The forced root over the two groups' trees, laid out as the parallel build lays out its top.
             List<Subtree> subtrees = new ArrayList<>();
             Object left = parallel ? plan(0, split, 1, subtrees) : new Subtree(0, split, 1);

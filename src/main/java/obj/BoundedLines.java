@@ -3,6 +3,7 @@ package obj;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Reader;
+import java.util.function.BooleanSupplier;
 
 /**
  * The lines of a Wavefront text (OBJ or MTL), counted, each bounded in length and the whole text bounded too: a
@@ -26,6 +27,35 @@ final class BoundedLines {
         this.kind = kind;
         this.maxLineLength = maxLineLength;
         this.maxCharacters = maxCharacters;
+    }
+
+    /** Receives the lines of {@link #forEach}. */
+    @FunctionalInterface
+    interface LineParser {
+        /**
+         * Parses one line.
+         *
+         * @param line the line without its terminator
+         * @param number its 1-based number
+         */
+        void parse(String line, int number) throws ObjFormatException;
+    }
+
+    /**
+     * Hands every line to {@code parser}, in order; an I/O error becomes an {@link ObjFormatException} of
+     * {@code name} at the last line handed over. {@code sawStatement} is asked before each further line (see
+     * {@link #next}).
+     */
+    void forEach(String name, LineParser parser, BooleanSupplier sawStatement) throws ObjFormatException {
+        int parsed = 0;
+        try {
+            for (String line = next(false); line != null; line = next(sawStatement.getAsBoolean())) {
+                parsed = number;
+                parser.parse(line, parsed);
+            }
+        } catch (IOException e) {
+            throw new ObjFormatException(name, parsed, "cannot be read: " + e, e);
+        }
     }
 
     /** The 1-based number of the line last returned (0 before the first). */

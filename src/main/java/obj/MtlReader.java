@@ -132,15 +132,14 @@ public final class MtlReader {
      */
     public static MtlLibrary read(String name, Reader text) throws ObjFormatException {
         MtlReader reader = new MtlReader(name);
-        try {
-            BoundedLines lines = new BoundedLines(text, reader.file, "MTL", MAX_LINE_LENGTH, MAX_CHARACTERS);
-            for (String line = lines.next(false); line != null; line = lines.next(reader.sawStatement)) {
-                reader.lineNumber = lines.number();
-                reader.parseLine(line);
-            }
-        } catch (IOException e) {
-            throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
-        }
+        new BoundedLines(text, reader.file, "MTL", MAX_LINE_LENGTH, MAX_CHARACTERS)
+                .forEach(
+                        name,
+                        (line, number) -> {
+                            reader.lineNumber = number;
+                            reader.parseLine(line);
+                        },
+                        () -> reader.sawStatement);
         return reader.finish();
     }
 

@@ -172,16 +172,15 @@ public final class ObjReader {
             throws ObjFormatException {
         ObjReader reader = new ObjReader(name, heap);
         reader.byMaterial = byMaterial;
-        try {
-            // Bounded lines: a file without line breaks, or an endless one, is an error, not an out-of-memory crash.
-            BoundedLines lines = new BoundedLines(text, reader.file, "OBJ", MAX_LINE_LENGTH, MAX_CHARACTERS);
-            for (String line = lines.next(false); line != null; line = lines.next(reader.sawStatement)) {
-                reader.lineNumber = lines.number();
-                reader.parseLine(line);
-            }
-        } catch (IOException e) {
-            throw new ObjFormatException(name, reader.lineNumber, "cannot be read: " + e, e);
-        }
+        // Bounded lines: a file without line breaks, or an endless one, is an error, not an out-of-memory crash.
+        new BoundedLines(text, reader.file, "OBJ", MAX_LINE_LENGTH, MAX_CHARACTERS)
+                .forEach(
+                        name,
+                        (line, number) -> {
+                            reader.lineNumber = number;
+                            reader.parseLine(line);
+                        },
+                        () -> reader.sawStatement);
         return reader.finish();
     }
 
