@@ -1,5 +1,6 @@
 package geometries;
 
+import java.util.stream.IntStream;
 import primitives.Double3;
 import primitives.Ray;
 
@@ -75,21 +76,9 @@ public final class Accelerator implements Intersectable {
         objects = new Intersectable[n];
         mayTransmit = new boolean[n];
         clear = new boolean[n];
-        for (int k = 0; k < n; k++) {
-            int i = bvh == null ? k : bvh.order[k];
-            info[2 * k] = i;
-            objects[k] = c.objects[i];
-            mayTransmit[k] = c.mayTransmit[i];
-            clear[k] = c.clear[i];
-            if (objects[k] == null) {
-                System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
-                info[2 * k + 1] = c.shared[i];
-                owners[k] = c.owners[i];
-                parts[k] = c.parts[i];
-            } else {
-                info[2 * k + 1] = OBJECT;
-            }
-        }
+        // Each position is written from its own primitive alone, so large meshes lay out on all cores.
+        IntStream positions = IntStream.range(0, n);
+        (n >= PARALLEL_LAYOUT ? positions.parallel() : positions).forEach(k -> layOut(c, k));
         java.util.Set<Prototype> placed = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
         for (Intersectable object : objects) if (object instanceof Instance instance) placed.add(instance.prototype());
         prototypes = placed.toArray(new Prototype[0]);
@@ -103,6 +92,26 @@ public final class Accelerator implements Intersectable {
         long end = System.nanoTime();
         layoutSeconds = (end - bvhDone) * 1e-9;
         buildSeconds = (end - collectStart) * 1e-9;
+    }
+
+    /** Primitives from which the layout runs in parallel. */
+    private static final int PARALLEL_LAYOUT = 1 << 16;
+
+    /** Writes the primitive at position {@code k} of the leaf order into the flat arrays. */
+    private void layOut(PrimitiveCollector c, int k) {
+        int i = bvh == null ? k : bvh.order[k];
+        info[2 * k] = i;
+        objects[k] = c.objects[i];
+        mayTransmit[k] = c.mayTransmit[i];
+        clear[k] = c.clear[i];
+        if (objects[k] == null) {
+            System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
+            info[2 * k + 1] = c.shared[i];
+            owners[k] = c.owners[i];
+            parts[k] = c.parts[i];
+        } else {
+            info[2 * k + 1] = OBJECT;
+        }
     }
 
     /**

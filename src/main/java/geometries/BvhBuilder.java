@@ -1,8 +1,9 @@
 package geometries;
 
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.ForkJoinWorkerThread;
 
 /**
  * The binned-SAH build of a {@link BVH}'s binary tree: at each node the centroids are binned along the axis of
@@ -12,13 +13,23 @@ import java.util.List;
  * nodes.
  */
 final class BvhBuilder {
+    /**
+     * Doubles in a range's summary: its primitives' box (min x, y, z, max x, y, z), then the box of their centroids.
+     * A split's bins already hold its children's summaries, so a node needs no pass of its own over its primitives.
+     */
+    private static final int SUMMARY = 12;
+
     private final double[] primBounds;
     final int[] index;
     private final int bins;
     private final int maxLeafSize;
     private final int[] binCount;
-    private final double[] binBounds;
+    /** Per bin, the summary of the primitives whose centroids fall in it. */
+    private final double[] binSummaries;
+
     private final double[] rightArea;
+    /** Per depth, the summaries of the two children the split at that depth made: left, then right. */
+    private final double[] childSummaries = new double[2 * SUMMARY * (BVH.MAX_DEPTH + 1)];
     /** Scratch for the split axis {@link #split} reports. */
     private final int[] axis = new int[1];
 
@@ -45,32 +56,58 @@ final class BvhBuilder {
      * group can leave the second's subtree out.
      */
     BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
-        this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize, primBounds.length / 6);
+        this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize);
         int n = index.length;
         int split = firstOfSecondGroup(n, secondGroup);
         grouped = split > 0;
         if (grouped) {
             // The forced root over the two groups' trees, laid out as the parallel build lays out its top.
-            List<Subtree> subtrees = new ArrayList<>();
-            Object left = parallel ? plan(0, split, 1, subtrees) : new Subtree(0, split, 1);
-            Object right = parallel ? plan(split, n, 1, subtrees) : new Subtree(split, n, 1);
-            if (!parallel) {
-                subtrees.add((Subtree) left);
-                subtrees.add((Subtree) right);
+            double[] groups = new double[2 * SUMMARY];
+            summarize(0, split, groups, 0);
+            summarize(split, n, groups, SUMMARY);
+            Object top;
+            if (parallel) {
+                top = pool().invoke(ForkJoinTask.adapt(() -> {
+                    ForkJoinTask<Object> left = ForkJoinTask.adapt(() -> plan(0, split, 1, groups, 0))
+                            .fork();
+                    Object right = plan(split, n, 1, groups, SUMMARY);
+                    return groupRoot(left.join(), right);
+                }));
+            } else {
+                top = groupRoot(subtree(0, split, 1, groups, 0), subtree(split, n, 1, groups, SUMMARY));
             }
-            (parallel ? subtrees.parallelStream() : subtrees.stream()).forEach(Subtree::build);
-            float[] box = boxOf(left).clone(), other = boxOf(right);
-            // Minima and maxima of boxes already rounded outward: the box of the union, rounded outward.
-            for (int a = 0; a < 3; a++) {
-                box[a] = Math.min(box[a], other[a]);
-                box[3 + a] = Math.max(box[3 + a], other[3 + a]);
-            }
-            emit(new Split(box, 0, left, right));
-        } else if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
-            buildInParallel(n);
+            emitAll(top);
         } else if (n > 0) {
-            build(0, n, 0);
+            double[] root = new double[SUMMARY];
+            summarize(0, n, root, 0);
+            if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
+                emitAll(pool().invoke(ForkJoinTask.adapt(() -> plan(0, n, 0, root, 0))));
+            } else {
+                allocate(2 * n - 1);
+                build(0, n, 0, root, 0);
+            }
+        } else {
+            allocate(1);
         }
+    }
+
+    /** The root over the two groups' planned trees: its box is the union of theirs. */
+    private static Split groupRoot(Object left, Object right) {
+        float[] box = boxOf(left).clone(), other = boxOf(right);
+        // Minima and maxima of boxes already rounded outward: the box of the union, rounded outward.
+        for (int a = 0; a < 3; a++) {
+            box[a] = Math.min(box[a], other[a]);
+            box[3 + a] = Math.max(box[3 + a], other[3 + a]);
+        }
+        return new Split(box, 0, left, right);
+    }
+
+    /** The build's own fork/join pool, one worker per core: the common pool leaves a core to a caller that waits. */
+    private static ForkJoinPool pool;
+
+    private static synchronized ForkJoinPool pool() {
+        if (pool == null) pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        return pool;
     }
 
     /**
@@ -97,23 +134,28 @@ final class BvhBuilder {
     /** The rounded box of a planned node: a split's own, or a built subtree's root's. */
     private static float[] boxOf(Object planned) {
         if (planned instanceof Split split) return split.box();
-        return Arrays.copyOf(((Subtree) planned).builder.bounds, 6);
+        return Arrays.copyOf(((Subtree) planned).bounds(), 6);
     }
 
-    /** A builder for a subtree over {@code primitives} primitives of a shared {@code index}. */
-    private BvhBuilder(double[] primBounds, int[] index, int bins, int maxLeafSize, int primitives) {
+    /** A builder over a shared {@code index}; {@link #allocate} gives it room for nodes. */
+    private BvhBuilder(double[] primBounds, int[] index, int bins, int maxLeafSize) {
         this.primBounds = primBounds;
         this.index = index;
         this.bins = bins;
         this.maxLeafSize = maxLeafSize;
         binCount = new int[bins];
-        binBounds = new double[6 * bins];
+        binSummaries = new double[SUMMARY * bins];
         rightArea = new double[bins];
-        // A binary tree over n primitives has at most 2n - 1 nodes (leaves hold at least one), so the arrays are
-        // allocated once: growing them by doubling allocated and copied twice the memory on large meshes.
-        int capacity = Math.max(1, 2 * primitives - 1);
-        bounds = new float[6 * capacity];
-        data = new int[2 * capacity];
+    }
+
+    /**
+     * Allocates room for {@code nodes} nodes, at least one. A binary tree over n primitives has at most 2n - 1 nodes
+     * (leaves hold at least one), so a sequential build allocates once: growing by doubling allocated and copied
+     * twice the memory on large meshes.
+     */
+    private void allocate(int nodes) {
+        bounds = new float[6 * Math.max(1, nodes)];
+        data = new int[2 * Math.max(1, nodes)];
     }
 
     private static int[] identity(int n) {
@@ -122,69 +164,94 @@ final class BvhBuilder {
         return index;
     }
 
-    /**
-     * The parallel build: the top of the tree is split here exactly as {@link #build} would split it, down to
-     * ranges of at most {@link #BVH.PARALLEL_GRAIN} primitives; those subtrees are built on the common fork/join
-     * pool, each by its own builder into its own arrays (they partition disjoint ranges of the shared index);
-     * then everything is laid out depth-first as the sequential build numbers it. The tree is therefore
-     * identical, bit for bit, to the sequential one, whatever the number of cores.
-     */
-    private void buildInParallel(int n) {
-        List<Subtree> subtrees = new ArrayList<>();
-        Object top = plan(0, n, 0, subtrees);
-        subtrees.parallelStream().forEach(Subtree::build);
-        emit(top);
+    /** A subtree built by a builder of its own, its arrays trimmed to its nodes, ready for {@link #emit}. */
+    private record Subtree(float[] bounds, int[] data, int nodeCount, int leafCount, int maxDepth) {}
+
+    /** Room for the nodes of one parallel-build subtree. */
+    private record Room(float[] bounds, int[] data) {
+        Room() {
+            this(new float[6 * (2 * BVH.PARALLEL_GRAIN - 1)], new int[2 * (2 * BVH.PARALLEL_GRAIN - 1)]);
+        }
     }
 
-    /** A range the parallel build hands to a builder of its own. */
-    private final class Subtree {
-        final int start, end, depth;
-        BvhBuilder builder;
+    /**
+     * Each worker of {@link #pool} builds its subtrees in the same room and copies each out at its final size,
+     * instead of allocating every subtree the 2n - 1 nodes it might need.
+     */
+    private static final ThreadLocal<Room> ROOM = ThreadLocal.withInitial(Room::new);
 
-        Subtree(int start, int end, int depth) {
-            this.start = start;
-            this.end = end;
-            this.depth = depth;
+    /** Builds {@code [start, end)} (summarized at {@code summary[at..]}) by a builder of its own. */
+    private Subtree subtree(int start, int end, int depth, double[] summary, int at) {
+        BvhBuilder builder = new BvhBuilder(primBounds, index, bins, maxLeafSize);
+        if (end - start <= BVH.PARALLEL_GRAIN
+                && Thread.currentThread() instanceof ForkJoinWorkerThread worker
+                && worker.getPool() == pool) {
+            Room room = ROOM.get();
+            builder.bounds = room.bounds();
+            builder.data = room.data();
+        } else {
+            builder.allocate(2 * (end - start) - 1);
         }
-
-        void build() {
-            builder = new BvhBuilder(primBounds, index, bins, maxLeafSize, end - start);
-            builder.build(start, end, depth);
-        }
+        builder.build(start, end, depth, summary, at);
+        int nodes = builder.nodeCount;
+        return new Subtree(
+                Arrays.copyOf(builder.bounds, 6 * nodes),
+                Arrays.copyOf(builder.data, 2 * nodes),
+                nodes,
+                builder.leafCount,
+                builder.maxDepthReached);
     }
 
     /** An interior node of the top of the tree: its rounded box, split axis and two children. */
     private record Split(float[] box, int axis, Object left, Object right) {}
 
-    /** Splits {@code [start, end)} as {@link #build} would, down to subtrees; returns a Split or a Subtree. */
-    private Object plan(int start, int end, int depth, List<Subtree> subtrees) {
+    /**
+     * The parallel build, run in {@link #pool}: splits {@code [start, end)} exactly as {@link #build} would, builds
+     * the left side in a forked task and the right here, down to ranges of at most {@link BVH#PARALLEL_GRAIN}
+     * primitives, which builders of their own build (the ranges are disjoint parts of the shared index). Returns a
+     * Split or a Subtree; {@link #emit} lays them out depth-first as the sequential build numbers its nodes, so the
+     * tree is identical, bit for bit, to the sequential one whatever the number of cores.
+     */
+    private Object plan(int start, int end, int depth, double[] summary, int at) {
+        if (end - start <= BVH.PARALLEL_GRAIN) return subtree(start, end, depth, summary, at);
+        BvhBuilder top = new BvhBuilder(primBounds, index, bins, maxLeafSize);
         float[] box = new float[6];
-        int[] axis = new int[1];
-        int mid = end - start <= BVH.PARALLEL_GRAIN ? -1 : split(start, end, depth, box, axis);
-        if (mid < 0) {
-            Subtree subtree = new Subtree(start, end, depth);
-            subtrees.add(subtree);
-            return subtree;
-        }
-        Object left = plan(start, mid, depth + 1, subtrees);
-        return new Split(box, axis[0], left, plan(mid, end, depth + 1, subtrees));
+        int mid = top.split(start, end, depth, summary, at, box, 0);
+        if (mid < 0) return subtree(start, end, depth, summary, at);
+        int axis = top.axis[0];
+        double[] children = Arrays.copyOfRange(top.childSummaries, 2 * SUMMARY * depth, 2 * SUMMARY * (depth + 1));
+        ForkJoinTask<Object> left = ForkJoinTask.adapt(() -> plan(start, mid, depth + 1, children, 0))
+                .fork();
+        Object right = plan(mid, end, depth + 1, children, SUMMARY);
+        return new Split(box, axis, left.join(), right);
+    }
+
+    /** Allocates this builder's arrays at the size of the planned tree, then lays it out from node 0. */
+    private void emitAll(Object planned) {
+        allocate(nodesOf(planned));
+        emit(planned);
+    }
+
+    private static int nodesOf(Object planned) {
+        if (planned instanceof Subtree subtree) return subtree.nodeCount();
+        Split split = (Split) planned;
+        return 1 + nodesOf(split.left()) + nodesOf(split.right());
     }
 
     /** Lays out a planned node and everything below it at the next node index, depth-first. */
     private void emit(Object planned) {
-        if (planned instanceof Subtree subtree) {
-            BvhBuilder b = subtree.builder;
+        if (planned instanceof Subtree b) {
             int offset = nodeCount;
-            System.arraycopy(b.bounds, 0, bounds, 6 * offset, 6 * b.nodeCount);
-            for (int i = 0; i < b.nodeCount; i++) {
-                int link = b.data[2 * i], kind = b.data[2 * i + 1];
+            System.arraycopy(b.bounds(), 0, bounds, 6 * offset, 6 * b.nodeCount());
+            for (int i = 0; i < b.nodeCount(); i++) {
+                int link = b.data()[2 * i], kind = b.data()[2 * i + 1];
                 // Interior nodes link to their second child by node index; leaves to primitive positions.
                 data[2 * (offset + i)] = kind < 0 ? link + offset : link;
                 data[2 * (offset + i) + 1] = kind;
             }
-            nodeCount += b.nodeCount;
-            leafCount += b.leafCount;
-            maxDepthReached = Math.max(maxDepthReached, b.maxDepthReached);
+            nodeCount += b.nodeCount();
+            leafCount += b.leafCount();
+            maxDepthReached = Math.max(maxDepthReached, b.maxDepth());
             return;
         }
         Split split = (Split) planned;
@@ -229,110 +296,147 @@ final class BvhBuilder {
         return 0.5 * (primBounds[6 * p + axis] + primBounds[6 * p + 3 + axis]);
     }
 
-    private void build(int start, int end, int depth) {
+    /** Builds the subtree over {@code [start, end)}, summarized at {@code summary[at..]}, at the next node index. */
+    private void build(int start, int end, int depth, double[] summary, int at) {
         int node = allocateNode();
-        int[] axis = this.axis;
-        int mid = split(start, end, depth, bounds, 6 * node, axis);
+        int mid = split(start, end, depth, summary, at, bounds, 6 * node);
         if (mid < 0) {
             makeLeaf(node, start, end - start);
             return;
         }
-        build(start, mid, depth + 1);
+        int splitAxis = axis[0];
+        int children = 2 * SUMMARY * depth;
+        build(start, mid, depth + 1, childSummaries, children);
         int second = nodeCount;
-        build(mid, end, depth + 1);
+        build(mid, end, depth + 1, childSummaries, children + SUMMARY);
         data[2 * node] = second;
-        data[2 * node + 1] = -1 - axis[0];
+        data[2 * node + 1] = -1 - splitAxis;
     }
 
-    /** {@link #split(int, int, int, float[], int, int[])} writing the box to the start of {@code box}. */
-    private int split(int start, int end, int depth, float[] box, int[] axis) {
-        return split(start, end, depth, box, 0, axis);
+    /** Writes the summary of {@code [start, end)} to {@code out[at..at+SUMMARY)}: one pass over its primitives. */
+    private void summarize(int start, int end, double[] out, int at) {
+        resetSummary(out, at);
+        for (int k = start; k < end; k++) include(index[k], out, at);
+    }
+
+    private static void resetSummary(double[] s, int at) {
+        Arrays.fill(s, at, at + 3, Double.POSITIVE_INFINITY);
+        Arrays.fill(s, at + 3, at + 6, Double.NEGATIVE_INFINITY);
+        Arrays.fill(s, at + 6, at + 9, Double.POSITIVE_INFINITY);
+        Arrays.fill(s, at + 9, at + 12, Double.NEGATIVE_INFINITY);
+    }
+
+    /** Writes the summary of primitive {@code p} alone to {@code s[at..]}. */
+    private void start(int p, double[] s, int at) {
+        int o = 6 * p;
+        for (int a = 0; a < 3; a++) {
+            double min = primBounds[o + a], max = primBounds[o + 3 + a];
+            s[at + a] = min;
+            s[at + 3 + a] = max;
+            s[at + 6 + a] = s[at + 9 + a] = 0.5 * (min + max);
+        }
+    }
+
+    /** Adds primitive {@code p}'s box and centroid to the summary at {@code s[at..]}. */
+    private void include(int p, double[] s, int at) {
+        int o = 6 * p;
+        double x0 = primBounds[o], y0 = primBounds[o + 1], z0 = primBounds[o + 2];
+        double x1 = primBounds[o + 3], y1 = primBounds[o + 4], z1 = primBounds[o + 5];
+        s[at] = Math.min(s[at], x0);
+        s[at + 1] = Math.min(s[at + 1], y0);
+        s[at + 2] = Math.min(s[at + 2], z0);
+        s[at + 3] = Math.max(s[at + 3], x1);
+        s[at + 4] = Math.max(s[at + 4], y1);
+        s[at + 5] = Math.max(s[at + 5], z1);
+        double x = 0.5 * (x0 + x1), y = 0.5 * (y0 + y1), z = 0.5 * (z0 + z1);
+        s[at + 6] = Math.min(s[at + 6], x);
+        s[at + 7] = Math.min(s[at + 7], y);
+        s[at + 8] = Math.min(s[at + 8], z);
+        s[at + 9] = Math.max(s[at + 9], x);
+        s[at + 10] = Math.max(s[at + 10], y);
+        s[at + 11] = Math.max(s[at + 11], z);
+    }
+
+    /** Merges the summary at {@code from[f..]} into the one at {@code to[t..]}. */
+    private static void merge(double[] from, int f, double[] to, int t) {
+        for (int i = 0; i < 3; i++) {
+            to[t + i] = Math.min(to[t + i], from[f + i]);
+            to[t + 3 + i] = Math.max(to[t + 3 + i], from[f + 3 + i]);
+            to[t + 6 + i] = Math.min(to[t + 6 + i], from[f + 6 + i]);
+            to[t + 9 + i] = Math.max(to[t + 9 + i], from[f + 9 + i]);
+        }
     }
 
     /**
-     * Decides the node over {@code [start, end)}: writes its box rounded outward to {@code box[at..at+6)}, and
-     * either returns -1 for a leaf or partitions the range and returns the split position, with the split axis
-     * in {@code axisOut[0]}.
+     * Decides the node over {@code [start, end)}, summarized at {@code summary[at..]}: writes its box rounded
+     * outward to {@code box[boxAt..boxAt+6)}, and either returns -1 for a leaf or partitions the range and returns
+     * the split position, with the split axis in {@link #axis} and the two children's summaries in
+     * {@link #childSummaries} at this depth.
      */
-    private int split(int start, int end, int depth, float[] box, int at, int[] axisOut) {
+    private int split(int start, int end, int depth, double[] summary, int at, float[] box, int boxAt) {
         int count = end - start;
-        // Node bounds and centroid bounds in one pass.
-        double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0;
-        double bx1 = Double.NEGATIVE_INFINITY, by1 = bx1, bz1 = bx1;
-        double cx0 = Double.POSITIVE_INFINITY, cy0 = cx0, cz0 = cx0;
-        double cx1 = Double.NEGATIVE_INFINITY, cy1 = cx1, cz1 = cx1;
-        for (int k = start; k < end; k++) {
-            int p = index[k];
-            int o = 6 * p;
-            bx0 = Math.min(bx0, primBounds[o]);
-            by0 = Math.min(by0, primBounds[o + 1]);
-            bz0 = Math.min(bz0, primBounds[o + 2]);
-            bx1 = Math.max(bx1, primBounds[o + 3]);
-            by1 = Math.max(by1, primBounds[o + 4]);
-            bz1 = Math.max(bz1, primBounds[o + 5]);
-            double x = 0.5 * (primBounds[o] + primBounds[o + 3]);
-            double y = 0.5 * (primBounds[o + 1] + primBounds[o + 4]);
-            double z = 0.5 * (primBounds[o + 2] + primBounds[o + 5]);
-            cx0 = Math.min(cx0, x);
-            cy0 = Math.min(cy0, y);
-            cz0 = Math.min(cz0, z);
-            cx1 = Math.max(cx1, x);
-            cy1 = Math.max(cy1, y);
-            cz1 = Math.max(cz1, z);
+        for (int a = 0; a < 3; a++) {
+            box[boxAt + a] = BVH.floatBelow(summary[at + a]);
+            box[boxAt + 3 + a] = BVH.floatAbove(summary[at + 3 + a]);
         }
-        box[at] = BVH.floatBelow(bx0);
-        box[at + 1] = BVH.floatBelow(by0);
-        box[at + 2] = BVH.floatBelow(bz0);
-        box[at + 3] = BVH.floatAbove(bx1);
-        box[at + 4] = BVH.floatAbove(by1);
-        box[at + 5] = BVH.floatAbove(bz1);
         maxDepthReached = Math.max(maxDepthReached, depth);
 
         if (count == 1 || depth >= BVH.MAX_DEPTH) return -1;
-        double ex = cx1 - cx0, ey = cy1 - cy0, ez = cz1 - cz0;
+        double ex = summary[at + 9] - summary[at + 6];
+        double ey = summary[at + 10] - summary[at + 7];
+        double ez = summary[at + 11] - summary[at + 8];
         int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-        axisOut[0] = axis;
-        double lo = axis == 0 ? cx0 : axis == 1 ? cy0 : cz0;
+        this.axis[0] = axis;
+        double lo = summary[at + 6 + axis];
         double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
         if (!(extent > 0)) {
             // All centroids coincide: nothing separates them, so split by count to keep leaves small.
-            return count <= maxLeafSize ? -1 : start + count / 2;
+            return count <= maxLeafSize ? -1 : halve(start, end, depth);
         }
-        return sahPartition(start, end, axis, lo, extent, surfaceArea(bx0, by0, bz0, bx1, by1, bz1), count);
+        double nodeArea = surfaceArea(
+                summary[at], summary[at + 1], summary[at + 2], summary[at + 3], summary[at + 4], summary[at + 5]);
+        return sahPartition(start, end, depth, axis, lo, extent, nodeArea, count);
+    }
+
+    /** Splits {@code [start, end)} by count where no bin boundary separates it; summarizes both halves. */
+    private int halve(int start, int end, int depth) {
+        int mid = start + (end - start) / 2;
+        summarize(start, mid, childSummaries, 2 * SUMMARY * depth);
+        summarize(mid, end, childSummaries, 2 * SUMMARY * depth + SUMMARY);
+        return mid;
     }
 
     /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
-    private int sahPartition(int start, int end, int axis, double lo, double extent, double nodeArea, int count) {
+    private int sahPartition(
+            int start, int end, int depth, int axis, double lo, double extent, double nodeArea, int count) {
+        // A bin's summary is written by its first primitive and only read where its count is positive, so no bin
+        // is reset: most nodes are small, and resetting sixteen bins cost more than binning their primitives.
         Arrays.fill(binCount, 0);
-        for (int i = 0; i < bins; i++) {
-            int o = 6 * i;
-            binBounds[o] = binBounds[o + 1] = binBounds[o + 2] = Double.POSITIVE_INFINITY;
-            binBounds[o + 3] = binBounds[o + 4] = binBounds[o + 5] = Double.NEGATIVE_INFINITY;
-        }
         double scale = bins / extent;
         for (int k = start; k < end; k++) {
             int p = index[k];
             int bin = binOf(centroid(p, axis), lo, scale);
-            binCount[bin]++;
-            int o = 6 * bin, q = 6 * p;
-            binBounds[o] = Math.min(binBounds[o], primBounds[q]);
-            binBounds[o + 1] = Math.min(binBounds[o + 1], primBounds[q + 1]);
-            binBounds[o + 2] = Math.min(binBounds[o + 2], primBounds[q + 2]);
-            binBounds[o + 3] = Math.max(binBounds[o + 3], primBounds[q + 3]);
-            binBounds[o + 4] = Math.max(binBounds[o + 4], primBounds[q + 4]);
-            binBounds[o + 5] = Math.max(binBounds[o + 5], primBounds[q + 5]);
+            if (binCount[bin]++ == 0) {
+                start(p, binSummaries, SUMMARY * bin);
+            } else {
+                include(p, binSummaries, SUMMARY * bin);
+            }
         }
         // Sweep from the right: area of the union of bins [i, bins).
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
         double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
         for (int i = bins - 1; i > 0; i--) {
-            int o = 6 * i;
-            x0 = Math.min(x0, binBounds[o]);
-            y0 = Math.min(y0, binBounds[o + 1]);
-            z0 = Math.min(z0, binBounds[o + 2]);
-            x1 = Math.max(x1, binBounds[o + 3]);
-            y1 = Math.max(y1, binBounds[o + 4]);
-            z1 = Math.max(z1, binBounds[o + 5]);
+            int o = SUMMARY * i;
+            if (binCount[i] == 0) {
+                rightArea[i] = i + 1 < bins ? rightArea[i + 1] : 0;
+                continue;
+            }
+            x0 = Math.min(x0, binSummaries[o]);
+            y0 = Math.min(y0, binSummaries[o + 1]);
+            z0 = Math.min(z0, binSummaries[o + 2]);
+            x1 = Math.max(x1, binSummaries[o + 3]);
+            y1 = Math.max(y1, binSummaries[o + 4]);
+            z1 = Math.max(z1, binSummaries[o + 5]);
             rightArea[i] = surfaceArea(x0, y0, z0, x1, y1, z1);
         }
         // Sweep from the left, pricing the split after bin i.
@@ -342,13 +446,14 @@ final class BvhBuilder {
         double bestCost = Double.POSITIVE_INFINITY;
         int bestSplit = -1;
         for (int i = 0; i < bins - 1; i++) {
-            int o = 6 * i;
-            x0 = Math.min(x0, binBounds[o]);
-            y0 = Math.min(y0, binBounds[o + 1]);
-            z0 = Math.min(z0, binBounds[o + 2]);
-            x1 = Math.max(x1, binBounds[o + 3]);
-            y1 = Math.max(y1, binBounds[o + 4]);
-            z1 = Math.max(z1, binBounds[o + 5]);
+            int o = SUMMARY * i;
+            if (binCount[i] == 0) continue; // the same split as after the last non-empty bin, which was priced
+            x0 = Math.min(x0, binSummaries[o]);
+            y0 = Math.min(y0, binSummaries[o + 1]);
+            z0 = Math.min(z0, binSummaries[o + 2]);
+            x1 = Math.max(x1, binSummaries[o + 3]);
+            y1 = Math.max(y1, binSummaries[o + 4]);
+            z1 = Math.max(z1, binSummaries[o + 5]);
             leftCount += binCount[i];
             int rightCount = count - leftCount;
             if (leftCount == 0 || rightCount == 0) continue;
@@ -360,10 +465,17 @@ final class BvhBuilder {
         }
         double splitCost = BVH.TRAVERSAL_COST + (nodeArea > 0 ? bestCost / nodeArea : 0);
         if (bestSplit < 0) {
-            return count <= maxLeafSize ? -1 : start + count / 2;
+            return count <= maxLeafSize ? -1 : halve(start, end, depth);
         }
         if (count <= maxLeafSize && splitCost >= count) return -1;
-        // Partition in place: bins [0, bestSplit] to the left.
+        // The children's summaries are their bins' (the same primitives), then partition in place: bins
+        // [0, bestSplit] to the left.
+        int left = 2 * SUMMARY * depth, right = left + SUMMARY;
+        resetSummary(childSummaries, left);
+        resetSummary(childSummaries, right);
+        for (int i = 0; i < bins; i++) {
+            if (binCount[i] > 0) merge(binSummaries, SUMMARY * i, childSummaries, i <= bestSplit ? left : right);
+        }
         int i = start, j = end - 1;
         while (i <= j) {
             if (binOf(centroid(index[i], axis), lo, scale) <= bestSplit) {
