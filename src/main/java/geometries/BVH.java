@@ -212,7 +212,7 @@ public final class BVH {
          */
         private static double weight(BvhBuilder b, int binary) {
             int o = 6 * binary;
-            double area = BvhBuilder.surfaceArea(
+            double area = SahSplitter.surfaceArea(
                     b.bounds[o], b.bounds[o + 1], b.bounds[o + 2], b.bounds[o + 3], b.bounds[o + 4], b.bounds[o + 5]);
             return area * b.primitivesBelow(binary);
         }

@@ -1,37 +1,25 @@
 package geometries;
 
+import static geometries.SahSplitter.SUMMARY;
+
 import java.util.Arrays;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.ForkJoinWorkerThread;
 
 /**
- * The binned-SAH build of a {@link BVH}'s binary tree: at each node the centroids are binned along the axis of
- * largest centroid extent and the cheapest bin boundary is taken unless a leaf is cheaper; nodes are written
- * depth-first into arrays sized once for the 2n - 1 nodes a binary tree can have. Large inputs build their
- * subtrees in parallel, into the very tree the sequential build gives. {@link BVH} then collapses it into wide
- * nodes.
+ * The build of a {@link BVH}'s binary tree, each node decided by a {@link SahSplitter} (binned SAH); nodes are
+ * written depth-first, a sequential build into arrays sized once for the 2n - 1 nodes a binary tree can have.
+ * Large inputs split their top on a fork/join pool and build their subtrees in parallel, into the very tree the
+ * sequential build gives. {@link BVH} then collapses it into wide nodes.
  */
 final class BvhBuilder {
-    /**
-     * Doubles in a range's summary: its primitives' box (min x, y, z, max x, y, z), then the box of their centroids.
-     * A split's bins already hold its children's summaries, so a node needs no pass of its own over its primitives.
-     */
-    private static final int SUMMARY = 12;
-
     private final double[] primBounds;
     final int[] index;
     private final int bins;
     private final int maxLeafSize;
-    private final int[] binCount;
-    /** Per bin, the summary of the primitives whose centroids fall in it. */
-    private final double[] binSummaries;
-
-    private final double[] rightArea;
-    /** Per depth, the summaries of the two children the split at that depth made: left, then right. */
-    private final double[] childSummaries = new double[2 * SUMMARY * (BVH.MAX_DEPTH + 1)];
-    /** Scratch for the split axis {@link #split} reports. */
-    private final int[] axis = new int[1];
+    /** Decides this builder's nodes. */
+    private final SahSplitter splitter;
 
     /**
      * Six floats per node, its box rounded outward ({@link BVH#floatBelow}, {@link BVH#floatAbove}): all the collapse
@@ -63,8 +51,8 @@ final class BvhBuilder {
         if (grouped) {
             // The forced root over the two groups' trees, laid out as the parallel build lays out its top.
             double[] groups = new double[2 * SUMMARY];
-            summarize(0, split, groups, 0);
-            summarize(split, n, groups, SUMMARY);
+            splitter.summarize(0, split, groups, 0);
+            splitter.summarize(split, n, groups, SUMMARY);
             Object top;
             if (parallel) {
                 top = pool().invoke(ForkJoinTask.adapt(() -> {
@@ -79,7 +67,7 @@ final class BvhBuilder {
             emitAll(top);
         } else if (n > 0) {
             double[] root = new double[SUMMARY];
-            summarize(0, n, root, 0);
+            splitter.summarize(0, n, root, 0);
             if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
                 emitAll(pool().invoke(ForkJoinTask.adapt(() -> plan(0, n, 0, root, 0))));
             } else {
@@ -103,7 +91,7 @@ final class BvhBuilder {
     }
 
     /** The build's own fork/join pool, one worker per core: the common pool leaves a core to a caller that waits. */
-    private static ForkJoinPool pool;
+    private static volatile ForkJoinPool pool;
 
     private static synchronized ForkJoinPool pool() {
         if (pool == null) pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
@@ -143,9 +131,7 @@ final class BvhBuilder {
         this.index = index;
         this.bins = bins;
         this.maxLeafSize = maxLeafSize;
-        binCount = new int[bins];
-        binSummaries = new double[SUMMARY * bins];
-        rightArea = new double[bins];
+        splitter = new SahSplitter(primBounds, index, bins, maxLeafSize);
     }
 
     /**
@@ -214,12 +200,14 @@ final class BvhBuilder {
      */
     private Object plan(int start, int end, int depth, double[] summary, int at) {
         if (end - start <= BVH.PARALLEL_GRAIN) return subtree(start, end, depth, summary, at);
-        BvhBuilder top = new BvhBuilder(primBounds, index, bins, maxLeafSize);
+        SahSplitter top = new SahSplitter(primBounds, index, bins, maxLeafSize);
         float[] box = new float[6];
-        int mid = top.split(start, end, depth, summary, at, box, 0);
+        SahSplitter.roundedBox(summary, at, box, 0);
+        int mid = top.split(start, end, depth, summary, at);
         if (mid < 0) return subtree(start, end, depth, summary, at);
-        int axis = top.axis[0];
-        double[] children = Arrays.copyOfRange(top.childSummaries, 2 * SUMMARY * depth, 2 * SUMMARY * (depth + 1));
+        int axis = top.splitAxis;
+        int first = SahSplitter.childrenAt(depth);
+        double[] children = Arrays.copyOfRange(top.childSummaries, first, first + 2 * SUMMARY);
         ForkJoinTask<Object> left = ForkJoinTask.adapt(() -> plan(start, mid, depth + 1, children, 0))
                 .fork();
         Object right = plan(mid, end, depth + 1, children, SUMMARY);
@@ -288,24 +276,19 @@ final class BvhBuilder {
         return nodeCount++;
     }
 
-    /**
-     * Centroid of primitive {@code p} on {@code axis}, computed where needed rather than stored: the box it
-     * comes from is read anyway, and a stored copy cost another cache miss per primitive and pass.
-     */
-    private double centroid(int p, int axis) {
-        return 0.5 * (primBounds[6 * p + axis] + primBounds[6 * p + 3 + axis]);
-    }
-
     /** Builds the subtree over {@code [start, end)}, summarized at {@code summary[at..]}, at the next node index. */
     private void build(int start, int end, int depth, double[] summary, int at) {
         int node = allocateNode();
-        int mid = split(start, end, depth, summary, at, bounds, 6 * node);
+        SahSplitter.roundedBox(summary, at, bounds, 6 * node);
+        maxDepthReached = Math.max(maxDepthReached, depth);
+        int mid = splitter.split(start, end, depth, summary, at);
         if (mid < 0) {
             makeLeaf(node, start, end - start);
             return;
         }
-        int splitAxis = axis[0];
-        int children = 2 * SUMMARY * depth;
+        int splitAxis = splitter.splitAxis;
+        double[] childSummaries = splitter.childSummaries;
+        int children = SahSplitter.childrenAt(depth);
         build(start, mid, depth + 1, childSummaries, children);
         int second = nodeCount;
         build(mid, end, depth + 1, childSummaries, children + SUMMARY);
@@ -313,196 +296,9 @@ final class BvhBuilder {
         data[2 * node + 1] = -1 - splitAxis;
     }
 
-    /** Writes the summary of {@code [start, end)} to {@code out[at..at+SUMMARY)}: one pass over its primitives. */
-    private void summarize(int start, int end, double[] out, int at) {
-        resetSummary(out, at);
-        for (int k = start; k < end; k++) include(index[k], out, at);
-    }
-
-    private static void resetSummary(double[] s, int at) {
-        Arrays.fill(s, at, at + 3, Double.POSITIVE_INFINITY);
-        Arrays.fill(s, at + 3, at + 6, Double.NEGATIVE_INFINITY);
-        Arrays.fill(s, at + 6, at + 9, Double.POSITIVE_INFINITY);
-        Arrays.fill(s, at + 9, at + 12, Double.NEGATIVE_INFINITY);
-    }
-
-    /** Writes the summary of primitive {@code p} alone to {@code s[at..]}. */
-    private void start(int p, double[] s, int at) {
-        int o = 6 * p;
-        for (int a = 0; a < 3; a++) {
-            double min = primBounds[o + a], max = primBounds[o + 3 + a];
-            s[at + a] = min;
-            s[at + 3 + a] = max;
-            s[at + 6 + a] = s[at + 9 + a] = 0.5 * (min + max);
-        }
-    }
-
-    /** Adds primitive {@code p}'s box and centroid to the summary at {@code s[at..]}. */
-    private void include(int p, double[] s, int at) {
-        int o = 6 * p;
-        double x0 = primBounds[o], y0 = primBounds[o + 1], z0 = primBounds[o + 2];
-        double x1 = primBounds[o + 3], y1 = primBounds[o + 4], z1 = primBounds[o + 5];
-        s[at] = Math.min(s[at], x0);
-        s[at + 1] = Math.min(s[at + 1], y0);
-        s[at + 2] = Math.min(s[at + 2], z0);
-        s[at + 3] = Math.max(s[at + 3], x1);
-        s[at + 4] = Math.max(s[at + 4], y1);
-        s[at + 5] = Math.max(s[at + 5], z1);
-        double x = 0.5 * (x0 + x1), y = 0.5 * (y0 + y1), z = 0.5 * (z0 + z1);
-        s[at + 6] = Math.min(s[at + 6], x);
-        s[at + 7] = Math.min(s[at + 7], y);
-        s[at + 8] = Math.min(s[at + 8], z);
-        s[at + 9] = Math.max(s[at + 9], x);
-        s[at + 10] = Math.max(s[at + 10], y);
-        s[at + 11] = Math.max(s[at + 11], z);
-    }
-
-    /** Merges the summary at {@code from[f..]} into the one at {@code to[t..]}. */
-    private static void merge(double[] from, int f, double[] to, int t) {
-        for (int i = 0; i < 3; i++) {
-            to[t + i] = Math.min(to[t + i], from[f + i]);
-            to[t + 3 + i] = Math.max(to[t + 3 + i], from[f + 3 + i]);
-            to[t + 6 + i] = Math.min(to[t + 6 + i], from[f + 6 + i]);
-            to[t + 9 + i] = Math.max(to[t + 9 + i], from[f + 9 + i]);
-        }
-    }
-
-    /**
-     * Decides the node over {@code [start, end)}, summarized at {@code summary[at..]}: writes its box rounded
-     * outward to {@code box[boxAt..boxAt+6)}, and either returns -1 for a leaf or partitions the range and returns
-     * the split position, with the split axis in {@link #axis} and the two children's summaries in
-     * {@link #childSummaries} at this depth.
-     */
-    private int split(int start, int end, int depth, double[] summary, int at, float[] box, int boxAt) {
-        int count = end - start;
-        for (int a = 0; a < 3; a++) {
-            box[boxAt + a] = BVH.floatBelow(summary[at + a]);
-            box[boxAt + 3 + a] = BVH.floatAbove(summary[at + 3 + a]);
-        }
-        maxDepthReached = Math.max(maxDepthReached, depth);
-
-        if (count == 1 || depth >= BVH.MAX_DEPTH) return -1;
-        double ex = summary[at + 9] - summary[at + 6];
-        double ey = summary[at + 10] - summary[at + 7];
-        double ez = summary[at + 11] - summary[at + 8];
-        int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-        this.axis[0] = axis;
-        double lo = summary[at + 6 + axis];
-        double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
-        if (!(extent > 0)) {
-            // All centroids coincide: nothing separates them, so split by count to keep leaves small.
-            return count <= maxLeafSize ? -1 : halve(start, end, depth);
-        }
-        double nodeArea = surfaceArea(
-                summary[at], summary[at + 1], summary[at + 2], summary[at + 3], summary[at + 4], summary[at + 5]);
-        return sahPartition(start, end, depth, axis, lo, extent, nodeArea, count);
-    }
-
-    /** Splits {@code [start, end)} by count where no bin boundary separates it; summarizes both halves. */
-    private int halve(int start, int end, int depth) {
-        int mid = start + (end - start) / 2;
-        summarize(start, mid, childSummaries, 2 * SUMMARY * depth);
-        summarize(mid, end, childSummaries, 2 * SUMMARY * depth + SUMMARY);
-        return mid;
-    }
-
-    /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
-    private int sahPartition(
-            int start, int end, int depth, int axis, double lo, double extent, double nodeArea, int count) {
-        // A bin's summary is written by its first primitive and only read where its count is positive, so no bin
-        // is reset: most nodes are small, and resetting sixteen bins cost more than binning their primitives.
-        Arrays.fill(binCount, 0);
-        double scale = bins / extent;
-        for (int k = start; k < end; k++) {
-            int p = index[k];
-            int bin = binOf(centroid(p, axis), lo, scale);
-            if (binCount[bin]++ == 0) {
-                start(p, binSummaries, SUMMARY * bin);
-            } else {
-                include(p, binSummaries, SUMMARY * bin);
-            }
-        }
-        // Sweep from the right: area of the union of bins [i, bins).
-        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
-        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-        for (int i = bins - 1; i > 0; i--) {
-            int o = SUMMARY * i;
-            if (binCount[i] == 0) {
-                rightArea[i] = i + 1 < bins ? rightArea[i + 1] : 0;
-                continue;
-            }
-            x0 = Math.min(x0, binSummaries[o]);
-            y0 = Math.min(y0, binSummaries[o + 1]);
-            z0 = Math.min(z0, binSummaries[o + 2]);
-            x1 = Math.max(x1, binSummaries[o + 3]);
-            y1 = Math.max(y1, binSummaries[o + 4]);
-            z1 = Math.max(z1, binSummaries[o + 5]);
-            rightArea[i] = surfaceArea(x0, y0, z0, x1, y1, z1);
-        }
-        // Sweep from the left, pricing the split after bin i.
-        x0 = y0 = z0 = Double.POSITIVE_INFINITY;
-        x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
-        int leftCount = 0;
-        double bestCost = Double.POSITIVE_INFINITY;
-        int bestSplit = -1;
-        for (int i = 0; i < bins - 1; i++) {
-            int o = SUMMARY * i;
-            if (binCount[i] == 0) continue; // the same split as after the last non-empty bin, which was priced
-            x0 = Math.min(x0, binSummaries[o]);
-            y0 = Math.min(y0, binSummaries[o + 1]);
-            z0 = Math.min(z0, binSummaries[o + 2]);
-            x1 = Math.max(x1, binSummaries[o + 3]);
-            y1 = Math.max(y1, binSummaries[o + 4]);
-            z1 = Math.max(z1, binSummaries[o + 5]);
-            leftCount += binCount[i];
-            int rightCount = count - leftCount;
-            if (leftCount == 0 || rightCount == 0) continue;
-            double cost = leftCount * surfaceArea(x0, y0, z0, x1, y1, z1) + rightCount * rightArea[i + 1];
-            if (cost < bestCost) {
-                bestCost = cost;
-                bestSplit = i;
-            }
-        }
-        double splitCost = BVH.TRAVERSAL_COST + (nodeArea > 0 ? bestCost / nodeArea : 0);
-        if (bestSplit < 0) {
-            return count <= maxLeafSize ? -1 : halve(start, end, depth);
-        }
-        if (count <= maxLeafSize && splitCost >= count) return -1;
-        // The children's summaries are their bins' (the same primitives), then partition in place: bins
-        // [0, bestSplit] to the left.
-        int left = 2 * SUMMARY * depth, right = left + SUMMARY;
-        resetSummary(childSummaries, left);
-        resetSummary(childSummaries, right);
-        for (int i = 0; i < bins; i++) {
-            if (binCount[i] > 0) merge(binSummaries, SUMMARY * i, childSummaries, i <= bestSplit ? left : right);
-        }
-        int i = start, j = end - 1;
-        while (i <= j) {
-            if (binOf(centroid(index[i], axis), lo, scale) <= bestSplit) {
-                i++;
-            } else {
-                int s = index[i];
-                index[i] = index[j];
-                index[j] = s;
-                j--;
-            }
-        }
-        return i;
-    }
-
-    private int binOf(double centroid, double lo, double scale) {
-        int bin = (int) ((centroid - lo) * scale);
-        return bin < 0 ? 0 : bin >= bins ? bins - 1 : bin;
-    }
-
     private void makeLeaf(int node, int start, int count) {
         data[2 * node] = start;
         data[2 * node + 1] = count;
         leafCount++;
-    }
-
-    static double surfaceArea(double x0, double y0, double z0, double x1, double y1, double z1) {
-        double ex = x1 - x0, ey = y1 - y0, ez = z1 - z0;
-        return 2 * (ex * ey + ey * ez + ez * ex);
     }
 }
