@@ -87,7 +87,8 @@ public final class BVH {
         this.maxDepth = b.maxDepthReached;
         this.order = b.index;
         boolean rootIsLeaf = b.data[1] > 0;
-        Collapser c = new Collapser(b, rootIsLeaf ? 0 : Collapser.countWideNodes(b, 0));
+        Collapser c = new Collapser(b);
+        c.allocate(rootIsLeaf ? 0 : c.countWideNodes(0));
         if (!rootIsLeaf) c.collapse(0);
         nodes = c.nodes;
         wideNodeCount = c.count;
@@ -100,12 +101,23 @@ public final class BVH {
     /** Collapses the binary tree into wide nodes, written depth-first. */
     private static final class Collapser {
         private final BvhBuilder b;
+        /**
+         * What opening each binary node is worth: its box's surface area times its primitives, the SAH's estimate of
+         * the work below it. Area alone (Embree's choice) spends root slots on the few huge, far objects of a scene
+         * such as the street's moon and clouds, and leaves the street itself for the next level.
+         */
+        private final double[] work;
+
         float[] nodes;
         int count;
 
-        /** {@code wideNodes}: from {@link #countWideNodes}, so the array is allocated once at its final size. */
-        Collapser(BvhBuilder b, int wideNodes) {
+        Collapser(BvhBuilder b) {
             this.b = b;
+            work = b.workBelow();
+        }
+
+        /** {@code wideNodes}: from {@link #countWideNodes}, so the array is allocated once at its final size. */
+        void allocate(int wideNodes) {
             nodes = new float[NODE_STRIDE * wideNodes];
         }
 
@@ -114,12 +126,12 @@ public final class BVH {
          * without the writes (a few milliseconds for a million primitives, against allocating and copying an array
          * sized for the worst case).
          */
-        static int countWideNodes(BvhBuilder b, int binary) {
+        int countWideNodes(int binary) {
             int[] children = new int[WIDTH];
-            int n = open(b, binary, children);
+            int n = open(binary, children);
             int total = 1;
             for (int c = 0; c < n; c++) {
-                if (!isLeaf(b, children[c])) total += countWideNodes(b, children[c]);
+                if (!isLeaf(b, children[c])) total += countWideNodes(children[c]);
             }
             return total;
         }
@@ -128,7 +140,7 @@ public final class BVH {
          * Fills {@code children} with the binary nodes that become the wide children of binary interior node
          * {@code binary}, in order; returns how many.
          */
-        static int open(BvhBuilder b, int binary, int[] children) {
+        int open(int binary, int[] children) {
             int n = 0;
             children[n++] = binary + 1;
             children[n++] = b.data[2 * binary];
@@ -138,7 +150,7 @@ public final class BVH {
                 double widestWeight = -1;
                 for (int i = 0; i < n; i++) {
                     if (isLeaf(b, children[i])) continue;
-                    double weight = weight(b, children[i]);
+                    double weight = work[children[i]];
                     if (weight > widestWeight) {
                         widestWeight = weight;
                         widest = i;
@@ -173,7 +185,7 @@ public final class BVH {
         int collapse(int binary) {
             int self = count++;
             int[] children = new int[WIDTH];
-            int n = open(b, binary, children);
+            int n = open(binary, children);
             if (self == 0) {
                 System.arraycopy(children, 0, rootChildren, 0, n);
                 rootChildCount = n;
@@ -203,18 +215,6 @@ public final class BVH {
 
         private static boolean isLeaf(BvhBuilder b, int binary) {
             return b.data[2 * binary + 1] > 0;
-        }
-
-        /**
-         * What opening a child is worth: its box's surface area times its primitives, the SAH's estimate of the work
-         * below it. Area alone (Embree's choice) spends root slots on the few huge, far objects of a scene such as
-         * the street's moon and clouds, and leaves the street itself for the next level.
-         */
-        private static double weight(BvhBuilder b, int binary) {
-            int o = 6 * binary;
-            double area = SahSplitter.surfaceArea(
-                    b.bounds[o], b.bounds[o + 1], b.bounds[o + 2], b.bounds[o + 3], b.bounds[o + 4], b.bounds[o + 5]);
-            return area * b.primitivesBelow(binary);
         }
     }
 

@@ -251,25 +251,25 @@ final class BvhBuilder {
         emit(split.right());
     }
 
-    /** Primitives under each binary node, filled on first use by {@link #primitivesBelow}. */
-    private int[] below;
-
     /**
-     * The number of primitives in binary node {@code node}'s subtree.
+     * What opening each binary node is worth to the wide collapse: its box's surface area times the primitives below
+     * it, the SAH's estimate of the work below it.
      *
-     * @param node a node of the finished tree
-     * @return its primitive count
+     * @return one weight per node of the finished tree
      */
-    int primitivesBelow(int node) {
-        if (below == null) {
-            // Children follow their parents in depth-first order: one backward sweep sums every subtree.
-            below = new int[nodeCount];
-            for (int i = nodeCount - 1; i >= 0; i--) {
-                int count = data[2 * i + 1];
-                below[i] = count > 0 ? count : below[i + 1] + below[data[2 * i]];
-            }
+    double[] workBelow() {
+        // Children follow their parents in depth-first order: one backward sweep sums every subtree.
+        int[] below = new int[nodeCount];
+        double[] work = new double[nodeCount];
+        for (int i = nodeCount - 1; i >= 0; i--) {
+            int count = data[2 * i + 1];
+            below[i] = count > 0 ? count : below[i + 1] + below[data[2 * i]];
+            int o = 6 * i;
+            double area = SahSplitter.surfaceArea(
+                    bounds[o], bounds[o + 1], bounds[o + 2], bounds[o + 3], bounds[o + 4], bounds[o + 5]);
+            work[i] = area * below[i];
         }
-        return below[node];
+        return work;
     }
 
     private int allocateNode() {

@@ -77,17 +77,6 @@ final class SahSplitter {
         Arrays.fill(s, at + 9, at + 12, Double.NEGATIVE_INFINITY);
     }
 
-    /** Writes the summary of primitive {@code p} alone to {@code s[at..]}. */
-    private void start(int p, double[] s, int at) {
-        int o = 6 * p;
-        for (int a = 0; a < 3; a++) {
-            double min = primBounds[o + a], max = primBounds[o + 3 + a];
-            s[at + a] = min;
-            s[at + 3 + a] = max;
-            s[at + 6 + a] = s[at + 9 + a] = 0.5 * (min + max);
-        }
-    }
-
     /** Adds primitive {@code p}'s box and centroid to the summary at {@code s[at..]}. */
     private void include(int p, double[] s, int at) {
         int o = 6 * p;
@@ -106,6 +95,57 @@ final class SahSplitter {
         s[at + 9] = Math.max(s[at + 9], x);
         s[at + 10] = Math.max(s[at + 10], y);
         s[at + 11] = Math.max(s[at + 11], z);
+    }
+
+    /**
+     * Adds a run of {@code run} primitives, summarized by the twelve values (box, then centroids' box), to {@code bin}:
+     * the first run of a bin writes its summary, later ones merge (min and max are exact in any order).
+     */
+    private void addRun(
+            int bin,
+            int run,
+            double x0,
+            double y0,
+            double z0,
+            double x1,
+            double y1,
+            double z1,
+            double cx0,
+            double cy0,
+            double cz0,
+            double cx1,
+            double cy1,
+            double cz1) {
+        double[] s = binSummaries;
+        int o = SUMMARY * bin;
+        if (binCount[bin] == 0) {
+            s[o] = x0;
+            s[o + 1] = y0;
+            s[o + 2] = z0;
+            s[o + 3] = x1;
+            s[o + 4] = y1;
+            s[o + 5] = z1;
+            s[o + 6] = cx0;
+            s[o + 7] = cy0;
+            s[o + 8] = cz0;
+            s[o + 9] = cx1;
+            s[o + 10] = cy1;
+            s[o + 11] = cz1;
+        } else {
+            s[o] = Math.min(s[o], x0);
+            s[o + 1] = Math.min(s[o + 1], y0);
+            s[o + 2] = Math.min(s[o + 2], z0);
+            s[o + 3] = Math.max(s[o + 3], x1);
+            s[o + 4] = Math.max(s[o + 4], y1);
+            s[o + 5] = Math.max(s[o + 5], z1);
+            s[o + 6] = Math.min(s[o + 6], cx0);
+            s[o + 7] = Math.min(s[o + 7], cy0);
+            s[o + 8] = Math.min(s[o + 8], cz0);
+            s[o + 9] = Math.max(s[o + 9], cx1);
+            s[o + 10] = Math.max(s[o + 10], cy1);
+            s[o + 11] = Math.max(s[o + 11], cz1);
+        }
+        binCount[bin] += run;
     }
 
     /** Merges the summary at {@code from[f..]} into the one at {@code to[t..]}. */
@@ -157,15 +197,47 @@ final class SahSplitter {
         // is reset: most nodes are small, and resetting sixteen bins cost more than binning their primitives.
         Arrays.fill(binCount, 0);
         double scale = bins / extent;
+        // Neighbours in the index mostly fall in the same bin: a run of them is summarized in locals and merged
+        // into its bin once, not primitive by primitive through memory (each merge waiting for the last one's store).
+        int runBin = -1, run = 0;
+        double rx0 = 0, ry0 = 0, rz0 = 0, rx1 = 0, ry1 = 0, rz1 = 0;
+        double rcx0 = 0, rcy0 = 0, rcz0 = 0, rcx1 = 0, rcy1 = 0, rcz1 = 0;
         for (int k = start; k < end; k++) {
-            int p = index[k];
-            int bin = binOf(centroid(p, axis), lo, scale);
-            if (binCount[bin]++ == 0) {
-                start(p, binSummaries, SUMMARY * bin);
-            } else {
-                include(p, binSummaries, SUMMARY * bin);
+            int o = 6 * index[k];
+            double x0 = primBounds[o], y0 = primBounds[o + 1], z0 = primBounds[o + 2];
+            double x1 = primBounds[o + 3], y1 = primBounds[o + 4], z1 = primBounds[o + 5];
+            double x = 0.5 * (x0 + x1), y = 0.5 * (y0 + y1), z = 0.5 * (z0 + z1);
+            int bin = binOf(axis == 0 ? x : axis == 1 ? y : z, lo, scale);
+            if (bin == runBin) {
+                run++;
+                rx0 = Math.min(rx0, x0);
+                ry0 = Math.min(ry0, y0);
+                rz0 = Math.min(rz0, z0);
+                rx1 = Math.max(rx1, x1);
+                ry1 = Math.max(ry1, y1);
+                rz1 = Math.max(rz1, z1);
+                rcx0 = Math.min(rcx0, x);
+                rcy0 = Math.min(rcy0, y);
+                rcz0 = Math.min(rcz0, z);
+                rcx1 = Math.max(rcx1, x);
+                rcy1 = Math.max(rcy1, y);
+                rcz1 = Math.max(rcz1, z);
+                continue;
             }
+            if (run > 0) addRun(runBin, run, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
+            runBin = bin;
+            run = 1;
+            rx0 = x0;
+            ry0 = y0;
+            rz0 = z0;
+            rx1 = x1;
+            ry1 = y1;
+            rz1 = z1;
+            rcx0 = rcx1 = x;
+            rcy0 = rcy1 = y;
+            rcz0 = rcz1 = z;
         }
+        if (run > 0) addRun(runBin, run, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
         // Sweep from the right: area of the union of bins [i, bins).
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
         double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
