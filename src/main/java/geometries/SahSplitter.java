@@ -292,16 +292,13 @@ final class SahSplitter {
         for (int i = 0; i < bins; i++) {
             if (binCount[i] > 0) merge(binSummaries, SUMMARY * i, childSummaries, i <= bestSplit ? left : right);
         }
-        int i = start, j = end - 1;
-        while (i <= j) {
-            if (binOf(centroid(index[i], axis), lo, scale) <= bestSplit) {
-                i++;
-            } else {
-                int s = index[i];
-                index[i] = index[j];
-                index[j] = s;
-                j--;
-            }
+        int i = start;
+        for (int k = start; k < end; k++) {
+            int p = index[k];
+            int goesLeft = binOf(centroid(p, axis), lo, scale) <= bestSplit ? 1 : 0;
+            index[k] = index[i];
+            index[i] = p;
+            i += goesLeft;
         }
         return i;
     }
