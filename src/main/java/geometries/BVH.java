@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.IntStream;
 
 /**
  * A bounding volume hierarchy built top-down with a binned surface-area heuristic as a binary tree, then collapsed
@@ -81,15 +82,22 @@ public final class BVH {
     private final int maxDepth;
     private final int wideNodeCount;
 
-    private BVH(BvhBuilder b) {
+    /** Collapses the binary tree of {@code b}; {@code parallel}: a large tree's root subtrees on all cores. */
+    private BVH(BvhBuilder b, boolean parallel) {
         this.binaryNodeCount = b.nodeCount;
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
         this.order = b.index;
         boolean rootIsLeaf = b.data[1] > 0;
         Collapser c = new Collapser(b);
-        c.allocate(rootIsLeaf ? 0 : c.countWideNodes(0));
-        if (!rootIsLeaf) c.collapse(0);
+        if (rootIsLeaf) {
+            c.allocate(0);
+        } else if (parallel && b.nodeCount >= 2 * PARALLEL_GRAIN) {
+            c.collapseInParallel();
+        } else {
+            c.allocate(c.countWideNodes(0));
+            c.collapse(0);
+        }
         nodes = c.nodes;
         wideNodeCount = c.count;
         secondGroupSlots = b.grouped ? c.slotsFrom(b.data[0]) : 0;
@@ -114,6 +122,39 @@ public final class BVH {
         Collapser(BvhBuilder b) {
             this.b = b;
             work = b.workBelow();
+        }
+
+        /** A collapser writing into {@code whole}'s nodes from wide node {@code first} on (a subtree of the root). */
+        private Collapser(Collapser whole, int first) {
+            b = whole.b;
+            work = whole.work;
+            nodes = whole.nodes;
+            count = first;
+        }
+
+        /**
+         * {@link #collapse collapse(0)} with the root's subtrees counted and written on all cores: each is given the
+         * range of wide nodes the sequential collapse would give it, so the array is the same bit for bit.
+         */
+        void collapseInParallel() {
+            int[] children = new int[WIDTH];
+            int n = open(0, children);
+            int[] sizes = new int[n];
+            IntStream.range(0, n).parallel().forEach(c -> {
+                if (!isLeaf(b, children[c])) sizes[c] = countWideNodes(children[c]);
+            });
+            int[] links = new int[n];
+            int next = 1;
+            for (int c = 0; c < n; c++) {
+                links[c] = isLeaf(b, children[c]) ? b.data[2 * children[c]] : next;
+                next += sizes[c];
+            }
+            allocate(next);
+            IntStream.range(0, n).parallel().forEach(c -> {
+                if (!isLeaf(b, children[c])) new Collapser(this, links[c]).collapse(children[c]);
+            });
+            count = next;
+            write(0, children, n, links);
         }
 
         /** {@code wideNodes}: from {@link #countWideNodes}, so the array is allocated once at its final size. */
@@ -186,6 +227,16 @@ public final class BVH {
             int self = count++;
             int[] children = new int[WIDTH];
             int n = open(binary, children);
+            int[] links = new int[n];
+            for (int c = 0; c < n; c++) {
+                links[c] = isLeaf(b, children[c]) ? b.data[2 * children[c]] : collapse(children[c]);
+            }
+            write(self, children, n, links);
+            return self;
+        }
+
+        /** Writes wide node {@code self}: its {@code n} children's boxes, links (node or first primitive) and counts. */
+        private void write(int self, int[] children, int n, int[] links) {
             if (self == 0) {
                 System.arraycopy(children, 0, rootChildren, 0, n);
                 rootChildCount = n;
@@ -206,11 +257,9 @@ public final class BVH {
                     nodes[o + MAX_X + WIDTH * a + c] = b.bounds[6 * child + 3 + a];
                 }
                 boolean leaf = isLeaf(b, child);
-                int link = leaf ? b.data[2 * child] : collapse(child);
-                nodes[o + LINK + c] = Float.intBitsToFloat(link);
+                nodes[o + LINK + c] = Float.intBitsToFloat(links[c]);
                 nodes[o + COUNT + c] = Float.intBitsToFloat(leaf ? b.data[2 * child + 1] : 0);
             }
-            return self;
         }
 
         private static boolean isLeaf(BvhBuilder b, int binary) {
@@ -267,7 +316,7 @@ public final class BVH {
                 }
             }
         }
-        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup));
+        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);
     }
 
     /** The largest float not above {@code x}. */
