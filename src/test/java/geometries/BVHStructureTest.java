@@ -1,5 +1,6 @@
 package geometries;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -46,6 +47,57 @@ class BVHStructureTest {
         assertEquals(bvh.leafCount(), leaves);
         for (int p = 0; p < count; p++) assertEquals(1, seen[p], "primitive " + p + " in exactly one leaf");
         assertEquals(nodes.get(0).bounds(), bvh.bounds());
+    }
+
+    /**
+     * Every node's box is exactly the union of its primitives' boxes rounded outward to floats: the build derives a
+     * child's box from its parent's bins rather than from a pass over its primitives, and a box too large would
+     * cost only speed, so no query test would notice.
+     */
+    @ParameterizedTest(name = "{0} boxes, {1} bins, leaves of at most {2}")
+    @CsvSource({"500, 16, 4", "3000, 8, 2", "3000, 32, 1"})
+    void everyBoxIsTheTightestFloatBoxAroundItsPrimitives(int count, int bins, int maxLeafSize) {
+        double[] boxes = randomBoxes(count, new SplittableRandom(31L * count + bins));
+        BVH bvh = BVH.build(boxes, bins, maxLeafSize);
+        union(bvh.nodes(), 0, bvh, boxes);
+    }
+
+    /** The union of the primitives' boxes below node {@code i}, checked against the node's box on the way. */
+    private static double[] union(List<BVHNode> nodes, int i, BVH bvh, double[] boxes) {
+        BVHNode node = nodes.get(i);
+        double[] u = {
+            Double.POSITIVE_INFINITY,
+            Double.POSITIVE_INFINITY,
+            Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY,
+            Double.NEGATIVE_INFINITY,
+            Double.NEGATIVE_INFINITY
+        };
+        if (node.isLeaf()) {
+            for (int k = node.firstPrimitive(); k < node.firstPrimitive() + node.primitiveCount(); k++) {
+                int o = 6 * bvh.primitiveAt(k);
+                for (int a = 0; a < 3; a++) {
+                    u[a] = Math.min(u[a], boxes[o + a]);
+                    u[3 + a] = Math.max(u[3 + a], boxes[o + 3 + a]);
+                }
+            }
+        } else {
+            for (int child : node.children()) {
+                double[] c = union(nodes, child, bvh, boxes);
+                for (int a = 0; a < 3; a++) {
+                    u[a] = Math.min(u[a], c[a]);
+                    u[3 + a] = Math.max(u[3 + a], c[3 + a]);
+                }
+            }
+        }
+        BoundingBox b = node.bounds();
+        double[] expected = {
+            BVH.floatBelow(u[0]), BVH.floatBelow(u[1]), BVH.floatBelow(u[2]),
+            BVH.floatAbove(u[3]), BVH.floatAbove(u[4]), BVH.floatAbove(u[5])
+        };
+        double[] actual = {b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ};
+        assertArrayEquals(expected, actual, "node " + i);
+        return u;
     }
 
     @Test
