@@ -23,6 +23,11 @@ final class SahSplitter {
     /** Per bin, the summary of the primitives whose centroids fall in it. */
     private final double[] binSummaries;
 
+    /** The bins the node being split uses, in the order first used (then sorted), and how many. */
+    private final int[] used;
+
+    private int usedCount;
+    /** Per used bin, in order, the area of the union of it and the used bins after it. */
     private final double[] rightArea;
     /** Per depth, the summaries of the two children the split at that depth made: left, then right. */
     final double[] childSummaries = new double[2 * SUMMARY * (BVH.MAX_DEPTH + 1)];
@@ -40,6 +45,7 @@ final class SahSplitter {
         this.maxLeafSize = maxLeafSize;
         binCount = new int[bins];
         binSummaries = new double[SUMMARY * bins];
+        used = new int[bins];
         rightArea = new double[bins];
     }
 
@@ -119,6 +125,7 @@ final class SahSplitter {
         double[] s = binSummaries;
         int o = SUMMARY * bin;
         if (binCount[bin] == 0) {
+            used[usedCount++] = bin;
             s[o] = x0;
             s[o + 1] = y0;
             s[o + 2] = z0;
@@ -193,9 +200,10 @@ final class SahSplitter {
     /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
     private int sahPartition(
             int start, int end, int depth, int axis, double lo, double extent, double nodeArea, int count) {
-        // A bin's summary is written by its first primitive and only read where its count is positive, so no bin
-        // is reset: most nodes are small, and resetting sixteen bins cost more than binning their primitives.
-        Arrays.fill(binCount, 0);
+        // A bin's summary is written by its first primitive, and the sweeps visit only the bins used, in order: most
+        // nodes are small, and resetting and sweeping sixteen bins cost more than binning their primitives.
+        for (int u = 0; u < usedCount; u++) binCount[used[u]] = 0;
+        usedCount = 0;
         double scale = bins / extent;
         // Neighbours in the index mostly fall in the same bin: a run of them is summarized in locals and merged
         // into its bin once, not primitive by primitive through memory (each merge waiting for the last one's store).
@@ -238,45 +246,47 @@ final class SahSplitter {
             rcz0 = rcz1 = z;
         }
         if (run > 0) addRun(runBin, run, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
-        // Sweep from the right: area of the union of bins [i, bins).
+        int[] used = this.used;
+        int n = usedCount;
+        for (int u = 1; u < n; u++) { // insertion sort: a handful of bins
+            int bin = used[u], v = u;
+            for (; v > 0 && used[v - 1] > bin; v--) used[v] = used[v - 1];
+            used[v] = bin;
+        }
+        // Sweep from the right: area of the union of the used bins from the u-th on.
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
         double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-        for (int i = bins - 1; i > 0; i--) {
-            int o = SUMMARY * i;
-            if (binCount[i] == 0) {
-                rightArea[i] = i + 1 < bins ? rightArea[i + 1] : 0;
-                continue;
-            }
+        for (int u = n - 1; u > 0; u--) {
+            int o = SUMMARY * used[u];
             x0 = Math.min(x0, binSummaries[o]);
             y0 = Math.min(y0, binSummaries[o + 1]);
             z0 = Math.min(z0, binSummaries[o + 2]);
             x1 = Math.max(x1, binSummaries[o + 3]);
             y1 = Math.max(y1, binSummaries[o + 4]);
             z1 = Math.max(z1, binSummaries[o + 5]);
-            rightArea[i] = surfaceArea(x0, y0, z0, x1, y1, z1);
+            rightArea[u] = surfaceArea(x0, y0, z0, x1, y1, z1);
         }
-        // Sweep from the left, pricing the split after bin i.
+        // Sweep from the left, pricing the split after each used bin but the last (after an empty bin, the split is
+        // the one after the used bin before it).
         x0 = y0 = z0 = Double.POSITIVE_INFINITY;
         x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
         int leftCount = 0;
         double bestCost = Double.POSITIVE_INFINITY;
         int bestSplit = -1;
-        for (int i = 0; i < bins - 1; i++) {
-            int o = SUMMARY * i;
-            if (binCount[i] == 0) continue; // the same split as after the last non-empty bin, which was priced
+        for (int u = 0; u < n - 1; u++) {
+            int bin = used[u], o = SUMMARY * bin;
             x0 = Math.min(x0, binSummaries[o]);
             y0 = Math.min(y0, binSummaries[o + 1]);
             z0 = Math.min(z0, binSummaries[o + 2]);
             x1 = Math.max(x1, binSummaries[o + 3]);
             y1 = Math.max(y1, binSummaries[o + 4]);
             z1 = Math.max(z1, binSummaries[o + 5]);
-            leftCount += binCount[i];
+            leftCount += binCount[bin];
             int rightCount = count - leftCount;
-            if (leftCount == 0 || rightCount == 0) continue;
-            double cost = leftCount * surfaceArea(x0, y0, z0, x1, y1, z1) + rightCount * rightArea[i + 1];
+            double cost = leftCount * surfaceArea(x0, y0, z0, x1, y1, z1) + rightCount * rightArea[u + 1];
             if (cost < bestCost) {
                 bestCost = cost;
-                bestSplit = i;
+                bestSplit = bin;
             }
         }
         double splitCost = BVH.TRAVERSAL_COST + (nodeArea > 0 ? bestCost / nodeArea : 0);
@@ -289,8 +299,8 @@ final class SahSplitter {
         int left = childrenAt(depth), right = left + SUMMARY;
         resetSummary(childSummaries, left);
         resetSummary(childSummaries, right);
-        for (int i = 0; i < bins; i++) {
-            if (binCount[i] > 0) merge(binSummaries, SUMMARY * i, childSummaries, i <= bestSplit ? left : right);
+        for (int u = 0; u < n; u++) {
+            merge(binSummaries, SUMMARY * used[u], childSummaries, used[u] <= bestSplit ? left : right);
         }
         int i = start;
         for (int k = start; k < end; k++) {
