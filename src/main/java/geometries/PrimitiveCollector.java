@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.stream.IntStream;
 
 /**
  * Gathers the primitives of a geometry tree for {@link Accelerator}: triangles of polygons (fans) and meshes into
@@ -130,33 +131,41 @@ final class PrimitiveCollector {
     /** Six doubles per primitive, padded slightly outward. */
     double[] boxes() {
         double[] boxes = new double[6 * count];
-        for (int k = 0; k < count; k++) {
-            int b = 6 * k;
-            BoundingBox box = objectBoxes[k];
-            if (box == null) {
-                int o = 9 * k;
-                for (int a = 0; a < 3; a++) {
-                    double lo = Math.min(triangles[o + a], Math.min(triangles[o + 3 + a], triangles[o + 6 + a]));
-                    double hi = Math.max(triangles[o + a], Math.max(triangles[o + 3 + a], triangles[o + 6 + a]));
-                    boxes[b + a] = lo;
-                    boxes[b + 3 + a] = hi;
-                }
-            } else {
-                boxes[b] = box.minX;
-                boxes[b + 1] = box.minY;
-                boxes[b + 2] = box.minZ;
-                boxes[b + 3] = box.maxX;
-                boxes[b + 4] = box.maxY;
-                boxes[b + 5] = box.maxZ;
-            }
-            for (int a = 0; a < 3; a++) {
-                double lo = boxes[b + a], hi = boxes[b + 3 + a];
-                double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + Double.MIN_NORMAL;
-                boxes[b + a] = lo - pad;
-                boxes[b + 3 + a] = hi + pad;
-            }
-        }
+        // Each box from its own primitive alone: a large mesh's on all cores.
+        IntStream positions = IntStream.range(0, count);
+        (count >= PARALLEL_BOXES ? positions.parallel() : positions).forEach(k -> box(k, boxes));
         return boxes;
+    }
+
+    /** Primitives from which {@link #boxes} runs in parallel. */
+    private static final int PARALLEL_BOXES = 1 << 16;
+
+    /** Writes primitive {@code k}'s padded box to {@code boxes[6k..6k+6)}. */
+    private void box(int k, double[] boxes) {
+        int b = 6 * k;
+        BoundingBox box = objectBoxes[k];
+        if (box == null) {
+            int o = 9 * k;
+            for (int a = 0; a < 3; a++) {
+                double lo = Math.min(triangles[o + a], Math.min(triangles[o + 3 + a], triangles[o + 6 + a]));
+                double hi = Math.max(triangles[o + a], Math.max(triangles[o + 3 + a], triangles[o + 6 + a]));
+                boxes[b + a] = lo;
+                boxes[b + 3 + a] = hi;
+            }
+        } else {
+            boxes[b] = box.minX;
+            boxes[b + 1] = box.minY;
+            boxes[b + 2] = box.minZ;
+            boxes[b + 3] = box.maxX;
+            boxes[b + 4] = box.maxY;
+            boxes[b + 5] = box.maxZ;
+        }
+        for (int a = 0; a < 3; a++) {
+            double lo = boxes[b + a], hi = boxes[b + 3 + a];
+            double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + Double.MIN_NORMAL;
+            boxes[b + a] = lo - pad;
+            boxes[b + 3 + a] = hi + pad;
+        }
     }
 
     /** An undirected edge between two exact points, for finding shared outline edges. */
