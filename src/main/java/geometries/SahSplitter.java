@@ -139,6 +139,8 @@ final class SahSplitter {
             s[o + 10] = cy1;
             s[o + 11] = cz1;
         } else {
+            // Written out, like include's: one helper for both put the sequential 1M build at 0.487-0.492 s against
+            // 0.427-0.429 s (best of 15, three alternated pairs), the JIT inlining this path differently.
             s[o] = Math.min(s[o], x0);
             s[o + 1] = Math.min(s[o + 1], y0);
             s[o + 2] = Math.min(s[o + 2], z0);
