@@ -477,6 +477,78 @@ public final class Accelerator implements Intersectable {
     }
 
     /**
+     * Announces a beam of shadow queries through {@code scratch}: segments that start within {@code radius} (per
+     * axis) of (px, py, pz) and end within {@code radius} of (cx, cy, cz), such as the rays from shading points toward
+     * a disk light. The tree is then searched once for the beam, and every {@link #passesLight} query whose segment
+     * lies within it tests only the leaves found. The answers are the same as without the beam, bit for bit: a query
+     * the beam does not cover searches the tree as usual.
+     *
+     * <p>A record keeps a few beams per {@code slot} (a light's index, say): aiming again toward the same end from a
+     * start within 0.9 of the radius of one of them keeps what that one found, so neighbouring shading points share
+     * one search. Aiming makes that beam the one later queries use.
+     *
+     * @param scratch the record the queries will use
+     * @param slot the beam's slot in the record, at least 0 (one per light, say)
+     * @param px the x coordinate the segments start near
+     * @param py the y coordinate the segments start near
+     * @param pz the z coordinate the segments start near
+     * @param cx the x coordinate of the centre the segments end near
+     * @param cy the y coordinate of the centre the segments end near
+     * @param cz the z coordinate of the centre the segments end near
+     * @param radius how far, per axis, a segment's start and end may lie from the beam's
+     */
+    public void aimShadowBeam(
+            HitRecord scratch,
+            int slot,
+            double px,
+            double py,
+            double pz,
+            double cx,
+            double cy,
+            double cz,
+            double radius) {
+        if (bvh == null) return;
+        scratch.aimShadowBeam(slot, this, px, py, pz, cx, cy, cz, radius);
+    }
+
+    /**
+     * The shadow query within a beam: the leaves the beam found, eight boxes per test, then their primitives, as
+     * the traversal would test them.
+     */
+    private boolean anyHitInBeam(ShadowBeam beam, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        final float[] nodes = beam.leafNodes;
+        final WideBoxTest boxTest = WideBoxTest.SELECTED;
+        final float[] entries = scratch.entries;
+        final RaySlabs slabs = scratch.slabs;
+        slabs.set(ray);
+        final float tMinF = RaySlabs.below(tMin), tMaxF = RaySlabs.above(tMax);
+        long tests = 0;
+        try {
+            for (int g = 0, groups = beam.groups; g < groups; g++) {
+                int o = BVH.NODE_STRIDE * g;
+                scratch.nodeVisits += BVH.WIDTH;
+                int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries);
+                for (; mask != 0; mask &= mask - 1) {
+                    int c = Integer.numberOfTrailingZeros(mask);
+                    int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                    int end = link + Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                    for (int k = link; k < end; k++) {
+                        if (clear[k]) continue;
+                        tests++;
+                        if (blocks(k, mayTransmit[k], ray, tMin, tMax, scratch)) {
+                            if (!mayTransmit[k]) scratch.occluder = k;
+                            return true;
+                        }
+                    }
+                }
+            }
+            return false;
+        } finally {
+            scratch.primitiveTests += tests;
+        }
+    }
+
+    /**
      * Any-hit search; returns true at the first blocking hit. With {@code honourTransparency}, hits on transparent
      * surfaces do not block but are collected in the scratch record.
      */
@@ -504,6 +576,14 @@ public final class Accelerator implements Intersectable {
                 return false;
             }
             if (boundedCount == 0) return false;
+            ShadowBeam beam = scratch.activeBeam;
+            if (beam != null
+                    && honourTransparency
+                    && tMin >= 0
+                    && beam.covers(this, ray, tMax)
+                    && beam.ready(bvh, scratch)) {
+                return anyHitInBeam(beam, ray, tMin, tMax, scratch);
+            }
             final float[] nodes = bvh.nodes;
             final WideBoxTest boxTest = WideBoxTest.SELECTED;
             final int[] stack = scratch.stack;

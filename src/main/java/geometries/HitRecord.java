@@ -56,6 +56,14 @@ public final class HitRecord {
     final float[] entries = new float[BVH.WIDTH];
     /** The current ray's constants for the box test. */
     final RaySlabs slabs = new RaySlabs();
+    /** Beams of shadow rays by slot, made on first use, and the one aimed last; see {@link Accelerator#aimShadowBeam}. */
+    private ShadowBeam[] shadowBeams = new ShadowBeam[0];
+    /** Per slot, the beam aimed anew next when none serves (round robin: the one aimed longest ago). */
+    private int[] beamVictims = new int[0];
+    /** Beams kept per slot. */
+    static final int BEAMS_PER_SLOT = 4;
+
+    ShadowBeam activeBeam;
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */
     public long nodeVisits, primitiveTests;
@@ -86,6 +94,41 @@ public final class HitRecord {
      * with texture coordinates; 0 for other geometries (the tracer zeroes them before completing a hit).
      */
     public double texU, texV;
+
+    /**
+     * Makes active the beam of {@code slot} that serves segments from near (px, py, pz) toward (cx, cy, cz), or, if
+     * none of the slot's {@link #BEAMS_PER_SLOT} does, aims the one used least recently there; beams are made on
+     * first use.
+     */
+    void aimShadowBeam(
+            int slot,
+            Accelerator accelerator,
+            double px,
+            double py,
+            double pz,
+            double cx,
+            double cy,
+            double cz,
+            double radius) {
+        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
+        int first = slot * BEAMS_PER_SLOT;
+        if (first + BEAMS_PER_SLOT > shadowBeams.length) {
+            shadowBeams = java.util.Arrays.copyOf(shadowBeams, first + BEAMS_PER_SLOT);
+            beamVictims = java.util.Arrays.copyOf(beamVictims, slot + 1);
+        }
+        for (int i = first; i < first + BEAMS_PER_SLOT; i++) {
+            ShadowBeam beam = shadowBeams[i];
+            if (beam != null && beam.serves(accelerator, px, py, pz, cx, cy, cz, radius)) {
+                activeBeam = beam;
+                return;
+            }
+        }
+        int victim = first + beamVictims[slot];
+        beamVictims[slot] = (beamVictims[slot] + 1) % BEAMS_PER_SLOT;
+        if (shadowBeams[victim] == null) shadowBeams[victim] = new ShadowBeam();
+        activeBeam = shadowBeams[victim];
+        activeBeam.aim(accelerator, px, py, pz, cx, cy, cz, radius);
+    }
 
     void addTransparentHit(int id, double r, double g, double b) {
         if (transparentCount == transparentIds.length) {

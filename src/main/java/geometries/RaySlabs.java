@@ -78,6 +78,30 @@ final class RaySlabs {
         floatSafe = finite & smallest >= Float.MIN_NORMAL & sum <= Float.MAX_VALUE;
     }
 
+    /**
+     * Makes these constants those of a "fat" ray, for which every box is widened by {@code r} on each side: a box's
+     * near plane moves by {@code r} toward the ray's origin, its slab distance by {@code r |1/d|}, and so the offset
+     * subtracted from near planes grows by that much (rounded up) and the one subtracted from far planes shrinks by
+     * as much (rounded down). The caller widens {@code r} for the rounding of the float reciprocal.
+     *
+     * @param r the widening, at least 0
+     * @return whether the float test still applies ({@link #floatSafe})
+     */
+    boolean widen(double r) {
+        if (!floatSafe) return false;
+        double sx = r * Math.abs(invX), sy = r * Math.abs(invY), sz = r * Math.abs(invZ);
+        nearX = Math.nextUp((float) (nearX + sx));
+        nearY = Math.nextUp((float) (nearY + sy));
+        nearZ = Math.nextUp((float) (nearZ + sz));
+        farX = Math.nextDown((float) (farX - sx));
+        farY = Math.nextDown((float) (farY - sy));
+        farZ = Math.nextDown((float) (farZ - sz));
+        float sum =
+                Math.abs(nearX) + Math.abs(nearY) + Math.abs(nearZ) + Math.abs(farX) + Math.abs(farY) + Math.abs(farZ);
+        floatSafe = sum <= Float.MAX_VALUE;
+        return floatSafe;
+    }
+
     /** A float not above {@code tMin}, one step below its rounding (covers the underflow of tiny distances). */
     static float below(double tMin) {
         return Math.nextDown((float) tMin);
