@@ -481,6 +481,8 @@ public class SimpleRayTracer extends RayTracerBase {
             ctx.visibleR = shadow.transmitR;
             ctx.visibleG = shadow.transmitG;
             ctx.visibleB = shadow.transmitB;
+            // Lit points come in runs as shadowed ones do: the next ray toward this light most likely passes too.
+            occluders[li] = -1;
         } else {
             ctx.visibleR = ctx.visibleG = ctx.visibleB = 0;
             if (shadow.occluder >= 0) occluders[li] = shadow.occluder;
