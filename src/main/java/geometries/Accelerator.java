@@ -496,6 +496,7 @@ public final class Accelerator implements Intersectable {
      * @param cy the y coordinate of the centre the segments end near
      * @param cz the z coordinate of the centre the segments end near
      * @param radius how far, per axis, a segment's start and end may lie from the beam's
+     * @throws IllegalArgumentException if {@code slot} is negative
      */
     public void aimShadowBeam(
             HitRecord scratch,
@@ -507,7 +508,8 @@ public final class Accelerator implements Intersectable {
             double cy,
             double cz,
             double radius) {
-        if (bvh == null) return;
+        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
+        if (bvh == null) return; // brute force: nothing to share
         scratch.aimShadowBeam(slot, this, px, py, pz, cx, cy, cz, radius);
     }
 

@@ -97,8 +97,8 @@ public final class HitRecord {
 
     /**
      * Makes active the beam of {@code slot} that serves segments from near (px, py, pz) toward (cx, cy, cz), or, if
-     * none of the slot's {@link #BEAMS_PER_SLOT} does, aims the one used least recently there; beams are made on
-     * first use.
+     * none of the slot's {@link #BEAMS_PER_SLOT} does, aims the one of them aimed longest ago; beams are made on first
+     * use.
      */
     void aimShadowBeam(
             int slot,
@@ -110,7 +110,6 @@ public final class HitRecord {
             double cy,
             double cz,
             double radius) {
-        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
         int first = slot * BEAMS_PER_SLOT;
         if (first + BEAMS_PER_SLOT > shadowBeams.length) {
             shadowBeams = java.util.Arrays.copyOf(shadowBeams, first + BEAMS_PER_SLOT);

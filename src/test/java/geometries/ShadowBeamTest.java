@@ -7,10 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -139,11 +139,13 @@ class ShadowBeamTest {
                 centre.z + (random.nextBoolean() ? r : -r));
     }
 
-    @Test
-    void aNegativeSlotIsRefused() {
-        Accelerator bvh = Accelerator.build(new Sphere(Point.ZERO, 1), true);
+    @ParameterizedTest(name = "BVH {0}")
+    @ValueSource(booleans = {true, false})
+    void aNegativeSlotIsRefused(boolean useBvh) {
+        Accelerator accelerator = Accelerator.build(new Sphere(Point.ZERO, 1), useBvh);
         IllegalArgumentException e = assertThrows(
-                IllegalArgumentException.class, () -> bvh.aimShadowBeam(new HitRecord(), -1, 0, 0, 5, 0, 0, 10, 1));
+                IllegalArgumentException.class,
+                () -> accelerator.aimShadowBeam(new HitRecord(), -1, 0, 0, 5, 0, 0, 10, 1));
         assertTrue(e.getMessage().contains("-1"), e.getMessage());
     }
 }
