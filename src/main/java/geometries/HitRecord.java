@@ -62,6 +62,8 @@ public final class HitRecord {
     private int[] beamVictims = new int[0];
     /** Beams kept per slot. */
     static final int BEAMS_PER_SLOT = 4;
+    /** Slots kept (about 2 KB per beam): a scene with more soft lights folds their slots onto these. */
+    static final int BEAM_SLOTS = 64;
 
     ShadowBeam activeBeam;
 
@@ -110,6 +112,8 @@ public final class HitRecord {
             double cy,
             double cz,
             double radius) {
+        // Slots beyond the last share the last ones' beams (a beam serves only its own light): memory stays bounded.
+        slot = slot % BEAM_SLOTS;
         int first = slot * BEAMS_PER_SLOT;
         if (first + BEAMS_PER_SLOT > shadowBeams.length) {
             shadowBeams = java.util.Arrays.copyOf(shadowBeams, first + BEAMS_PER_SLOT);

@@ -67,7 +67,7 @@ class ShadowBeamTest {
             Point p = new Point(random.nextGaussian() * 12, random.nextGaussian() * 12, random.nextGaussian() * 12);
             Point c = new Point(random.nextGaussian() * 12, random.nextGaussian() * 12, random.nextGaussian() * 12);
             double radius = b % 10 == 0 ? 20 : 0.05 + random.nextDouble() * 2;
-            int slot = random.nextInt(3);
+            int slot = random.nextInt(3) + (b % 7 == 0 ? HitRecord.BEAM_SLOTS : 0); // some fold onto others
             for (int start = 0; start < 3; start++) {
                 // Later starts lie within 0.9 of the radius of the first: they may reuse its search.
                 Point from = start == 0 ? p : near(p, 0.9 * radius, random);
