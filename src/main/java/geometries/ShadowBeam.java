@@ -23,6 +23,8 @@ import primitives.ReusableRay;
 final class ShadowBeam {
     /** The most leaves a beam holds; a search that finds more gives up, and the rays search the tree one by one. */
     static final int MAX_LEAVES = 8 * BVH.WIDTH;
+    /** How far a central segment along an axis is tilted, relative to the radius and to its length. */
+    private static final double TILT = 0x1p-10;
     /** Relative widening of the radius and the length, for the rounding of the fat ray's constants. */
     private static final double RELATIVE_MARGIN = 0x1p-20;
 
@@ -134,6 +136,16 @@ final class ShadowBeam {
                 + Math.max(Math.abs(cx), Math.max(Math.abs(cy), Math.abs(cz)))
                 + length;
         double r = radius * (1 + RELATIVE_MARGIN) + scale * RELATIVE_MARGIN;
+        // A central segment (nearly) along an axis has no float reciprocal there: tilt its end by a small part of the
+        // radius on such axes and widen by as much, which keeps every covered ray inside.
+        double tilt = radius * TILT;
+        if (!(Math.abs(dx) > length * TILT)) dx += tilt;
+        if (!(Math.abs(dy) > length * TILT)) dy += tilt;
+        if (!(Math.abs(dz) > length * TILT)) dz += tilt;
+        if (tilt > 0 && (dx != cx - px || dy != cy - py || dz != cz - pz)) {
+            r += 2 * tilt;
+            length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        }
         central.set(px, py, pz, dx, dy, dz);
         fat.set(central);
         if (!fat.widen(r)) return;

@@ -107,8 +107,10 @@ class ShadowBeamTest {
         for (int b = 0; b < beams; b++) {
             double scale = b % 4 == 0 ? 1e4 : 10; // far from the origin too: the margins are relative
             p[b] = new Point(random.nextGaussian() * scale, random.nextGaussian() * scale, random.nextGaussian());
-            c[b] = p[b].add(
-                    new Vector(random.nextGaussian() * 20, random.nextGaussian() * 20, 5 + random.nextDouble() * 20));
+            // Every fifth beam straight up an axis, which the search tilts.
+            double sideways = b % 5 == 1 ? 0 : 20;
+            c[b] = p[b].add(new Vector(
+                    random.nextGaussian() * sideways, random.nextGaussian() * sideways, 5 + random.nextDouble() * 20));
             radii[b] = 0.01 + random.nextDouble() * 3;
             from[b] = corner(p[b], radii[b], random);
             to[b] = corner(c[b], radii[b], random);
@@ -137,6 +139,24 @@ class ShadowBeamTest {
                 centre.x + (random.nextBoolean() ? r : -r),
                 centre.y + (random.nextBoolean() ? r : -r),
                 centre.z + (random.nextBoolean() ? r : -r));
+    }
+
+    /** A tree that is a single leaf (a root with primitives of its own) serves beams too. */
+    @org.junit.jupiter.api.Test
+    void aTreeThatIsOneLeafServesBeams() {
+        Geometries scene = new Geometries(new Triangle(new Point(-1, -1, 5), new Point(1, -1, 5), new Point(0, 1, 5)));
+        Accelerator bvh = Accelerator.build(scene, true), brute = Accelerator.build(scene, false);
+        assertTrue(bvh.getBvh().rootCount > 0, "the root is a leaf");
+        HitRecord beam = new HitRecord();
+        // Straight up the z axis: the search tilts the central segment, which has no float reciprocals along x and y.
+        bvh.aimShadowBeam(beam, 0, 0, 0, 0, 0, 0, 10, 0.5);
+        Ray blocked = new Ray(Point.ZERO, new Vector(0.1, 0, 10));
+        assertSameAnswer(bvh, brute, blocked, new Vector(0.1, 0, 10).length(), beam);
+        assertEquals(0, beam.transmitR, 0, "the triangle blocks the ray");
+        assertTrue(beam.activeBeam.collected(), "the beam holds the root leaf");
+        Ray passes = new Ray(new Point(0.4, 0.4, 0), new Vector(0, 0.4, 10));
+        assertSameAnswer(bvh, brute, passes, new Vector(0, 0.4, 10).length(), beam);
+        assertEquals(1, beam.transmitR, 0, "the ray passes beside the triangle");
     }
 
     @ParameterizedTest(name = "BVH {0}")
