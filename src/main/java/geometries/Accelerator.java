@@ -481,7 +481,8 @@ public final class Accelerator implements Intersectable {
      * axis) of (px, py, pz) and end within {@code radius} of (cx, cy, cz), such as the rays from shading points toward
      * a disk light. The tree is then searched once for the beam, and every {@link #passesLight} query whose segment
      * lies within it tests only the leaves found. The answers are the same as without the beam, bit for bit: a query
-     * the beam does not cover searches the tree as usual.
+     * the beam does not cover searches the tree as usual. Scenes of fewer than {@value ShadowBeam#MIN_PRIMITIVES}
+     * bounded primitives, and brute-force search, have no beams.
      *
      * <p>A record keeps a few beams per {@code slot} (a light's index, say): aiming again toward the same end from a
      * start within 0.9 of the radius of one of them keeps what that one found, so neighbouring shading points share
@@ -509,7 +510,8 @@ public final class Accelerator implements Intersectable {
             double cz,
             double radius) {
         if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
-        if (bvh == null) return; // brute force: nothing to share
+        // Brute force, or a tree too small for a search to cost more than a beam's own set-up: nothing to share.
+        if (bvh == null || boundedCount < ShadowBeam.MIN_PRIMITIVES) return;
         scratch.aimShadowBeam(slot, this, px, py, pz, cx, cy, cz, radius);
     }
 

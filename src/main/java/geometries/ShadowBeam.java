@@ -23,6 +23,11 @@ import primitives.ReusableRay;
 final class ShadowBeam {
     /** The most leaves a beam holds; a search that finds more gives up, and the rays search the tree one by one. */
     static final int MAX_LEAVES = 8 * BVH.WIDTH;
+    /**
+     * The fewest bounded primitives for which beams are aimed: below, a ray's own search is about as cheap as testing
+     * a beam's leaves (POV-Ray's soft-shadow scene, one sphere in the tree, measured slower with beams).
+     */
+    static final int MIN_PRIMITIVES = 64;
     /** How far a central segment along an axis is tilted, relative to the radius and to its length. */
     private static final double TILT = 0x1p-10;
     /** Relative widening of the radius and the length, for the rounding of the fat ray's constants. */

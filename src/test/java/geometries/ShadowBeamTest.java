@@ -141,13 +141,25 @@ class ShadowBeamTest {
                 centre.z + (random.nextBoolean() ? r : -r));
     }
 
-    /** A tree that is a single leaf (a root with primitives of its own) serves beams too. */
+    /**
+     * A tree of fewer than {@link ShadowBeam#MIN_PRIMITIVES} primitives gets no beam; one that is a single leaf of
+     * that many (a root with primitives of its own) does, straight up an axis too.
+     */
     @org.junit.jupiter.api.Test
-    void aTreeThatIsOneLeafServesBeams() {
-        Geometries scene = new Geometries(new Triangle(new Point(-1, -1, 5), new Point(1, -1, 5), new Point(0, 1, 5)));
-        Accelerator bvh = Accelerator.build(scene, true), brute = Accelerator.build(scene, false);
-        assertTrue(bvh.getBvh().rootCount > 0, "the root is a leaf");
+    void smallTreesHaveNoBeamsAndOneLeafServesThem() {
+        Triangle across = new Triangle(new Point(-1, -1, 5), new Point(1, -1, 5), new Point(0, 1, 5));
         HitRecord beam = new HitRecord();
+        Accelerator small = Accelerator.build(new Geometries(across), true);
+        small.aimShadowBeam(beam, 0, 0, 0, 0, 0, 0, 10, 0.5);
+        assertEquals(null, beam.activeBeam, "no beam for a tree of one triangle");
+
+        // Copies of one triangle: no split can separate them, so the root is one leaf.
+        Geometries scene = new Geometries(across);
+        for (int i = 1; i < ShadowBeam.MIN_PRIMITIVES; i++) {
+            scene.add(new Triangle(new Point(-1, -1, 5), new Point(1, -1, 5), new Point(0, 1, 5)));
+        }
+        Accelerator bvh = Accelerator.build(scene, true, 16, 64), brute = Accelerator.build(scene, false);
+        assertTrue(bvh.getBvh().rootCount > 0, "the root is a leaf");
         // Straight up the z axis: the search tilts the central segment, which has no float reciprocals along x and y.
         bvh.aimShadowBeam(beam, 0, 0, 0, 0, 0, 0, 10, 0.5);
         Ray blocked = new Ray(Point.ZERO, new Vector(0.1, 0, 10));
