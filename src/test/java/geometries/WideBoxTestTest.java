@@ -40,6 +40,12 @@ class WideBoxTestTest {
         WideBoxTest vector = (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
                 .getDeclaredConstructor()
                 .newInstance();
+        // The mask read the other way than this JDK's default (VectorMask.toLong or an OR across the lanes).
+        boolean defaultToLong = Runtime.version().feature() >= 25;
+        WideBoxTest other = (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
+                .getDeclaredConstructor(boolean.class)
+                .newInstance(!defaultToLong);
+        float[] c2 = new float[BVH.WIDTH];
         WideBoxTest scalar = new ScalarWideBoxTest();
         SplittableRandom random = new SplittableRandom(42);
         float[] nodes = new float[BVH.NODE_STRIDE];
@@ -57,6 +63,7 @@ class WideBoxTestTest {
             int maskB = vector.test(nodes, 0, slabs, lo, hi, b);
             String where = "case " + i + ": " + ray + " in (" + tMin + ", " + tMax + ")";
             assertEquals(maskA, maskB, where);
+            assertEquals(maskA, other.test(nodes, 0, slabs, lo, hi, c2), where + " (mask read the other way)");
             for (int c = 0; c < BVH.WIDTH; c++) {
                 assertEquals(
                         Float.floatToRawIntBits(a[c]),
