@@ -56,7 +56,7 @@ public final class HitRecord {
     final float[] entries = new float[BVH.WIDTH];
     /** The current ray's constants for the box test. */
     final RaySlabs slabs = new RaySlabs();
-    /** Beams of shadow rays by slot, made on first use, and the one aimed last; see {@link Accelerator#aimShadowBeam}. */
+    /** Beams of shadow rays by slot, made on first use (see {@link Accelerator#aimShadowBeam}). */
     private ShadowBeam[] shadowBeams = new ShadowBeam[0];
     /** Per slot, the beam aimed anew next when none serves (round robin: the one aimed longest ago). */
     private int[] beamVictims = new int[0];
@@ -65,6 +65,7 @@ public final class HitRecord {
     /** Slots kept (about 2 KB per beam): a scene with more soft lights folds their slots onto these. */
     static final int BEAM_SLOTS = 64;
 
+    /** The beam aimed last, which shadow queries through this record use where it covers their ray. */
     ShadowBeam activeBeam;
 
     /** Statistics: BVH nodes visited and primitives tested by queries through this record. */

@@ -143,11 +143,21 @@ final class ShadowBeam {
         double r = radius * (1 + RELATIVE_MARGIN) + scale * RELATIVE_MARGIN;
         // A central segment (nearly) along an axis has no float reciprocal there: tilt its end by a small part of the
         // radius on such axes and widen by as much, which keeps every covered ray inside.
-        double tilt = radius * TILT;
-        if (!(Math.abs(dx) > length * TILT)) dx += tilt;
-        if (!(Math.abs(dy) > length * TILT)) dy += tilt;
-        if (!(Math.abs(dz) > length * TILT)) dz += tilt;
-        if (tilt > 0 && (dx != cx - px || dy != cy - py || dz != cz - pz)) {
+        double tilt = radius * TILT, axial = length * TILT;
+        boolean tilted = false;
+        if (!(Math.abs(dx) > axial)) {
+            dx += tilt;
+            tilted = true;
+        }
+        if (!(Math.abs(dy) > axial)) {
+            dy += tilt;
+            tilted = true;
+        }
+        if (!(Math.abs(dz) > axial)) {
+            dz += tilt;
+            tilted = true;
+        }
+        if (tilted) {
             r += 2 * tilt;
             length = Math.sqrt(dx * dx + dy * dy + dz * dz);
         }
