@@ -44,7 +44,7 @@ public class Ray {
 
     /**
      * Sets every field from an origin and a direction that need not be unit: normalized exactly as
-     * {@link Vector#normalize()} does (scaled by the largest component first), so a reusable ray and a constructed
+     * {@link Vector#normalize()} does, so a reusable ray and a constructed
      * one along the same vector agree bit for bit.
      */
     final void init(double ox, double oy, double oz, double vx, double vy, double vz) {
@@ -53,10 +53,25 @@ public class Ray {
         this.ox = ox;
         this.oy = oy;
         this.oz = oz;
+        double sx = vx, sy = vy, sz = vz;
         double m = Math.max(Math.abs(vx), Math.max(Math.abs(vy), Math.abs(vz)));
-        double sx = vx / m, sy = vy / m, sz = vz / m;
-        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        double dx = sx * inverseLength, dy = sy * inverseLength, dz = sz * inverseLength;
+        if (!Vector.squaresInRange(m)) {
+            int shift = Vector.exponentShift(m);
+            sx = Math.scalb(vx, shift);
+            sy = Math.scalb(vy, shift);
+            sz = Math.scalb(vz, shift);
+        }
+        double dx, dy, dz;
+        if (Vector.onAxis(sx, sy, sz)) {
+            dx = Math.signum(sx);
+            dy = Math.signum(sy);
+            dz = Math.signum(sz);
+        } else {
+            double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+            dx = sx * inverseLength;
+            dy = sy * inverseLength;
+            dz = sz * inverseLength;
+        }
         this.dx = dx;
         this.dy = dy;
         this.dz = dz;
@@ -70,10 +85,11 @@ public class Ray {
         kz = k;
         kx = k == 2 ? 0 : k + 1;
         ky = kx == 2 ? 0 : kx + 1;
-        double dirZ = component(kz);
-        shearX = -component(kx) / dirZ;
-        shearY = -component(ky) / dirZ;
-        shearZ = 1.0 / dirZ;
+        // 1/d[kz] is one of the reciprocals above; the shear's products with it round differently from quotients,
+        // which does not matter to the watertight test: every triangle sees the same constants.
+        shearZ = kz == 0 ? invDx : kz == 1 ? invDy : invDz;
+        shearX = -component(kx) * shearZ;
+        shearY = -component(ky) * shearZ;
     }
 
     /**

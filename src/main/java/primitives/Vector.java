@@ -4,8 +4,10 @@ package primitives;
  * An immutable, non-zero direction in 3D space.
  *
  * <p>The zero vector is an error (it has no direction), and so is the cross product of parallel vectors.
- * {@link #normalize()} scales by the largest component first, so it neither overflows for huge vectors nor
- * underflows for tiny ones: (1e-200,1e-200,1e-200) and (1e200,1e200,1e200) both give 1/sqrt(3) per component.
+ * {@link #normalize()} and {@link #length()} sum the squares of the components directly when they are in range, and
+ * otherwise scale them by a power of two first (an exact scaling, so the result is the same as the direct sum would
+ * be in unbounded range): they neither overflow for huge vectors nor underflow for tiny ones, and (1e-200,1e-200,
+ * 1e-200) and (1e200,1e200,1e200) both give 1/sqrt(3) per component.
  */
 public final class Vector extends Point {
     /** The unit vector along x. */
@@ -114,7 +116,7 @@ public final class Vector extends Point {
     }
 
     /**
-     * The length of (x, y, z), exactly as {@link #length()} computes it (scaled by the largest component first).
+     * The length of (x, y, z), exactly as {@link #length()} computes it.
      *
      * @param x the x component
      * @param y the y component
@@ -123,10 +125,23 @@ public final class Vector extends Point {
      */
     public static double length(double x, double y, double z) {
         double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
-        double sx = x / m;
-        double sy = y / m;
-        double sz = z / m;
-        return m * Math.sqrt(sx * sx + sy * sy + sz * sz);
+        if (squaresInRange(m)) return Math.sqrt(x * x + y * y + z * z);
+        int shift = exponentShift(m);
+        double sx = Math.scalb(x, shift), sy = Math.scalb(y, shift), sz = Math.scalb(z, shift);
+        return Math.scalb(Math.sqrt(sx * sx + sy * sy + sz * sz), -shift);
+    }
+
+    /**
+     * Whether the squares of components at most {@code m} in magnitude (the largest of them) can be summed without
+     * overflow and without losing precision to underflow (smaller components may underflow; they do not count).
+     */
+    static boolean squaresInRange(double m) {
+        return m >= 0x1p-500 && m <= 0x1p500;
+    }
+
+    /** The power of two that brings a largest component {@code m} out of range near 1 (an exact scaling). */
+    static int exponentShift(double m) {
+        return -Math.getExponent(m);
     }
 
     /**
@@ -135,13 +150,24 @@ public final class Vector extends Point {
      * @return a new unit vector
      */
     public Vector normalize() {
-        // Scaling by the largest component first keeps the squares in range for any finite input.
+        double sx = x, sy = y, sz = z;
         double m = maxAbsComponent();
-        double sx = x / m;
-        double sy = y / m;
-        double sz = z / m;
+        if (!squaresInRange(m)) {
+            // An exact scaling by a power of two keeps the squares in range for any finite input.
+            int shift = exponentShift(m);
+            sx = Math.scalb(x, shift);
+            sy = Math.scalb(y, shift);
+            sz = Math.scalb(z, shift);
+        }
+        // Along an axis, the unit vector is exactly the axis (the product with a rounded inverse length may not be).
+        if (onAxis(sx, sy, sz)) return new Vector(Math.signum(sx), Math.signum(sy), Math.signum(sz));
         double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
         return new Vector(sx * inverseLength, sy * inverseLength, sz * inverseLength);
+    }
+
+    /** Whether at most one of the components is non-zero. */
+    static boolean onAxis(double x, double y, double z) {
+        return (x == 0 ? 1 : 0) + (y == 0 ? 1 : 0) + (z == 0 ? 1 : 0) >= 2;
     }
 
     /**

@@ -230,6 +230,29 @@ class VectorTest {
         }
     }
 
+    /**
+     * Out of the range where squares can be summed directly, normalize and length scale by a power of two, which is
+     * exact: so the same direction at 2^-600, 1 or 2^600 times the size gives the same unit vector bit for bit, and
+     * lengths in the same ratio, and a ray along it the same direction.
+     */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void powerOfTwoScalesChangeNeitherDirectionNorRelativeLength(long seed) {
+        Random random = new Random(seed);
+        for (int i = 0; i < 200; i++) {
+            Vector v =
+                    new Vector(random.nextDouble() * 2 - 1, random.nextDouble() * 2 - 1, random.nextDouble() * 2 - 1);
+            Vector u = v.normalize();
+            for (int e : new int[] {-600, -520, 520, 600}) {
+                Vector scaled = new Vector(Math.scalb(v.x, e), Math.scalb(v.y, e), Math.scalb(v.z, e));
+                String where = "seed " + seed + ", " + v + " times 2^" + e;
+                assertEquals(u, scaled.normalize(), where);
+                assertEquals(Math.scalb(v.length(), e), scaled.length(), 0, where);
+                assertEquals(u, new Ray(Point.ZERO, scaled).getDirection(), where);
+            }
+        }
+    }
+
     @ParameterizedTest(name = "seed {0}")
     @MethodSource("seeds")
     void crossProductOfRandomUnitVectorsIsOrthogonal(long seed) {
