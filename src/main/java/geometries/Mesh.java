@@ -321,13 +321,17 @@ public class Mesh extends Geometry {
         double ny = b0 * normals[a + 1] + b1 * normals[b + 1] + b2 * normals[c + 1];
         double nz = b0 * normals[a + 2] + b1 * normals[b + 2] + b2 * normals[c + 2];
         if (nx == 0 && ny == 0 && nz == 0) return;
-        // Vector.normalize's arithmetic: scaled by the largest component first.
-        double m = Math.max(Math.abs(nx), Math.max(Math.abs(ny), Math.abs(nz)));
-        double sx = nx / m, sy = ny / m, sz = nz / m;
-        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        hit.snx = sx * inverseLength;
-        hit.sny = sy * inverseLength;
-        hit.snz = sz * inverseLength;
+        // Vector.normalize's arithmetic.
+        double f = Vector.unitFactor(nx, ny, nz);
+        if (f > 0) {
+            hit.snx = nx * f;
+            hit.sny = ny * f;
+            hit.snz = nz * f;
+        } else {
+            hit.snx = Vector.unitComponent(nx, nx, ny, nz);
+            hit.sny = Vector.unitComponent(ny, nx, ny, nz);
+            hit.snz = Vector.unitComponent(nz, nx, ny, nz);
+        }
         if (hit.snx * hit.nx + hit.sny * hit.ny + hit.snz * hit.nz < 0) {
             hit.nx = -hit.nx;
             hit.ny = -hit.ny;

@@ -202,11 +202,16 @@ public final class WatertightTriangle {
         double ny = differenceOfProducts(e1z, e2x, e1x, e2z);
         double nz = differenceOfProducts(e1x, e2y, e1y, e2x);
         if (nx == 0 && ny == 0 && nz == 0) return false;
-        // Vector.normalize's arithmetic: scaled by the largest component first.
-        double m = Math.max(Math.abs(nx), Math.max(Math.abs(ny), Math.abs(nz)));
-        double sx = nx / m, sy = ny / m, sz = nz / m;
-        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        hit.setNormal(sx * inverseLength, sy * inverseLength, sz * inverseLength);
+        // Vector.normalize's arithmetic.
+        double f = primitives.Vector.unitFactor(nx, ny, nz);
+        if (f > 0) {
+            hit.setNormal(nx * f, ny * f, nz * f);
+        } else {
+            hit.setNormal(
+                    primitives.Vector.unitComponent(nx, nx, ny, nz),
+                    primitives.Vector.unitComponent(ny, nx, ny, nz),
+                    primitives.Vector.unitComponent(nz, nx, ny, nz));
+        }
         return true;
     }
 

@@ -130,13 +130,17 @@ public class PointLight implements LightSource {
         double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
         out.distance = d;
         if (d == 0) return;
-        // Vector.normalize's arithmetic: scaled by the largest component first.
-        double m = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
-        double sx = dx / m, sy = dy / m, sz = dz / m;
-        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        out.lx = sx * inverseLength;
-        out.ly = sy * inverseLength;
-        out.lz = sz * inverseLength;
+        // Vector.normalize's arithmetic.
+        double unit = Vector.unitFactor(dx, dy, dz);
+        if (unit > 0) {
+            out.lx = dx * unit;
+            out.ly = dy * unit;
+            out.lz = dz * unit;
+        } else {
+            out.lx = Vector.unitComponent(dx, dx, dy, dz);
+            out.ly = Vector.unitComponent(dy, dx, dy, dz);
+            out.lz = Vector.unitComponent(dz, dx, dy, dz);
+        }
         if (d > range) {
             out.r = out.g = out.b = 0;
             return;

@@ -53,24 +53,16 @@ public class Ray {
         this.ox = ox;
         this.oy = oy;
         this.oz = oz;
-        double sx = vx, sy = vy, sz = vz;
-        double m = Math.max(Math.abs(vx), Math.max(Math.abs(vy), Math.abs(vz)));
-        if (!Vector.squaresInRange(m)) {
-            int shift = Vector.exponentShift(m);
-            sx = Math.scalb(vx, shift);
-            sy = Math.scalb(vy, shift);
-            sz = Math.scalb(vz, shift);
-        }
         double dx, dy, dz;
-        if (Vector.onAxis(sx, sy, sz)) {
-            dx = Math.signum(sx);
-            dy = Math.signum(sy);
-            dz = Math.signum(sz);
+        double f = Vector.unitFactor(vx, vy, vz);
+        if (f > 0) {
+            dx = vx * f;
+            dy = vy * f;
+            dz = vz * f;
         } else {
-            double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-            dx = sx * inverseLength;
-            dy = sy * inverseLength;
-            dz = sz * inverseLength;
+            dx = Vector.unitComponent(vx, vx, vy, vz);
+            dy = Vector.unitComponent(vy, vx, vy, vz);
+            dz = Vector.unitComponent(vz, vx, vy, vz);
         }
         this.dx = dx;
         this.dy = dy;

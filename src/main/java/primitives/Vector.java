@@ -135,12 +135,12 @@ public final class Vector extends Point {
      * Whether the squares of components at most {@code m} in magnitude (the largest of them) can be summed without
      * overflow and without losing precision to underflow (smaller components may underflow; they do not count).
      */
-    static boolean squaresInRange(double m) {
+    private static boolean squaresInRange(double m) {
         return m >= 0x1p-500 && m <= 0x1p500;
     }
 
     /** The power of two that brings a largest component {@code m} out of range near 1 (an exact scaling). */
-    static int exponentShift(double m) {
+    private static int exponentShift(double m) {
         return -Math.getExponent(m);
     }
 
@@ -150,23 +150,50 @@ public final class Vector extends Point {
      * @return a new unit vector
      */
     public Vector normalize() {
-        double sx = x, sy = y, sz = z;
-        double m = maxAbsComponent();
-        if (!squaresInRange(m)) {
-            // An exact scaling by a power of two keeps the squares in range for any finite input.
-            int shift = exponentShift(m);
-            sx = Math.scalb(x, shift);
-            sy = Math.scalb(y, shift);
-            sz = Math.scalb(z, shift);
-        }
-        // Along an axis, the unit vector is exactly the axis (the product with a rounded inverse length may not be).
-        if (onAxis(sx, sy, sz)) return new Vector(Math.signum(sx), Math.signum(sy), Math.signum(sz));
-        double inverseLength = 1 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        return new Vector(sx * inverseLength, sy * inverseLength, sz * inverseLength);
+        double f = unitFactor(x, y, z);
+        if (f > 0) return new Vector(x * f, y * f, z * f);
+        return new Vector(unitComponent(x, x, y, z), unitComponent(y, x, y, z), unitComponent(z, x, y, z));
+    }
+
+    /**
+     * What {@link #normalize()} multiplies the components of (x, y, z) by, {@code 1 / sqrt(x^2 + y^2 + z^2)}, where
+     * it does: when the largest magnitude lies in [2^-500, 2^500] (the squares are in range) and at least two
+     * components are non-zero. Otherwise 0, and the unit vector's components are {@link #unitComponent}'s. Together
+     * they give {@code normalize()}'s values bit for bit without allocating, for hot paths.
+     *
+     * @param x the x component
+     * @param y the y component
+     * @param z the z component, not all three zero
+     * @return the factor, or 0 where {@link #unitComponent} applies
+     */
+    public static double unitFactor(double x, double y, double z) {
+        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        if (!squaresInRange(m) || onAxis(x, y, z)) return 0;
+        return 1 / Math.sqrt(x * x + y * y + z * z);
+    }
+
+    /**
+     * Component {@code c} of the unit vector along (x, y, z), as {@link #normalize()} computes it: along an axis
+     * exactly 1 or -1 and signed zeros (the product with a rounded inverse length may not be); out of range the
+     * components are first scaled by a power of two, which is exact, so the result is the one the direct formula
+     * would give with unbounded exponents.
+     *
+     * @param c the component wanted: {@code x}, {@code y} or {@code z}
+     * @param x the x component
+     * @param y the y component
+     * @param z the z component, not all three zero
+     * @return that component of the unit vector
+     */
+    public static double unitComponent(double c, double x, double y, double z) {
+        if (onAxis(x, y, z)) return Math.signum(c);
+        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        int shift = squaresInRange(m) ? 0 : exponentShift(m);
+        double sx = Math.scalb(x, shift), sy = Math.scalb(y, shift), sz = Math.scalb(z, shift);
+        return Math.scalb(c, shift) * (1 / Math.sqrt(sx * sx + sy * sy + sz * sz));
     }
 
     /** Whether at most one of the components is non-zero. */
-    static boolean onAxis(double x, double y, double z) {
+    private static boolean onAxis(double x, double y, double z) {
         return (x == 0 ? 1 : 0) + (y == 0 ? 1 : 0) + (z == 0 ? 1 : 0) >= 2;
     }
 

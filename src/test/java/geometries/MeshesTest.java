@@ -66,6 +66,35 @@ class MeshesTest {
         }
     }
 
+    /**
+     * The hit path's allocation-free {@code setNormal} gives {@code normal}'s unit vector bit for bit: over an
+     * icosphere, triangles facing along the axes (exact axis normals) and triangles 1e-150 and 1e150 across (normals out of the squares' range).
+     */
+    @Test
+    void setNormalAgreesWithNormalBitForBit() {
+        Mesh mesh = Meshes.icosphere(3);
+        int[] idx = mesh.indices;
+        HitRecord hit = new HitRecord();
+        for (int t = 0; t < idx.length; t += 3) {
+            assertSameNormal(mesh.vertices, 3 * idx[t], 3 * idx[t + 1], 3 * idx[t + 2], hit);
+        }
+        for (double s : new double[] {1, 1e-150, 1e150, 3.7}) {
+            assertSameNormal(new double[] {0, 0, 0, s, 0, 0, 0, s, 0}, 0, 3, 6, hit);
+            assertSameNormal(new double[] {0, 0, 0, 0, 0, s, s, 0, 0}, 0, 3, 6, hit);
+            assertSameNormal(new double[] {0, 0, 0, s, 2 * s, 0, -s, 0.5 * s, 3 * s}, 0, 3, 6, hit);
+        }
+    }
+
+    private static void assertSameNormal(double[] v, int a, int b, int c, HitRecord hit) {
+        var n = WatertightTriangle.normal(v, a, b, c);
+        assertTrue(WatertightTriangle.setNormal(v, a, b, c, hit));
+        String where =
+                "triangle at " + a + " of " + java.util.Arrays.toString(v).substring(0, 40);
+        assertEquals(n.x, hit.nx, 0, where);
+        assertEquals(n.y, hit.ny, 0, where);
+        assertEquals(n.z, hit.nz, 0, where);
+    }
+
     @Test
     void icosphereLevelSixHasTheBenchmarkSize() {
         assertEquals(81_920, Meshes.icosphere(6).triangleCount());

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 import primitives.Color;
 import primitives.Double3;
@@ -120,5 +121,37 @@ class LightsTest {
         assertMessage(() -> spot.setNarrowBeam(0.5), "narrowBeam", "0.5");
         assertMessage(() -> spot.setNarrowBeam(Double.NaN), "narrowBeam", "NaN");
         assertMessage(() -> new SpotLight(new Color(1, 1, 1), Point.ZERO, null), "direction");
+    }
+
+    /**
+     * The renderer's allocation-free {@code illuminate} gives {@code getL}, {@code getDistance} and
+     * {@code getIntensity} bit for bit: seeded points around the light, points straight along each axis from it
+     * (where the unit vector is exactly the axis) and points far and very near.
+     */
+    @Test
+    void illuminateAgreesWithTheVectorMethodsBitForBit() {
+        PointLight light = new PointLight(new Color(300, 200, 100), new Point(1.5, -2, 3))
+                .setKl(0.01)
+                .setKq(0.001);
+        Random random = new Random(20261126);
+        LightSample sample = new LightSample();
+        for (int i = 0; i < 600; i++) {
+            double scale = Math.pow(10, random.nextInt(13) - 6);
+            double dx = scale * (random.nextDouble() * 2 - 1);
+            double dy = i % 3 == 0 ? 0 : scale * (random.nextDouble() * 2 - 1);
+            double dz = i % 6 == 0 ? 0 : scale * (random.nextDouble() * 2 - 1);
+            Point p = new Point(1.5 + dx, -2 + dy, 3 + dz);
+            if (p.equals(new Point(1.5, -2, 3))) continue;
+            light.illuminate(p.x, p.y, p.z, sample);
+            Vector l = light.getL(p);
+            String where = "point " + p;
+            assertEquals(light.getDistance(p), sample.distance, 0, where);
+            assertEquals(l.x, sample.lx, 0, where);
+            assertEquals(l.y, sample.ly, 0, where);
+            assertEquals(l.z, sample.lz, 0, where);
+            Color intensity = light.getIntensity(p);
+            assertEquals(intensity.getR(), sample.r, 0, where);
+            assertEquals(intensity.getB(), sample.b, 0, where);
+        }
     }
 }
