@@ -11,6 +11,7 @@ import primitives.Point;
 import primitives.Ray;
 import primitives.ReusableRay;
 import primitives.Texture;
+import primitives.Util;
 import primitives.Vector;
 import renderer.sampling.SampleStream;
 import renderer.sampling.SamplingConfig;
@@ -283,7 +284,7 @@ public class SimpleRayTracer extends RayTracerBase {
             if (specularResponse) {
                 // r = l - 2(l.n)n; the highlight is where -v.r approaches 1.
                 double minusVr = -((vx * ls.lx + vy * ls.ly + vz * ls.lz) - 2 * nl * nv);
-                if (minusVr > 0) specular = Math.pow(minusVr, m.getShininess());
+                if (minusVr > 0) specular = Util.power(minusVr, m.getShininess());
             }
             // The material's response to the light, per unit of its intensity.
             double fr = kdR * diffuse + kS.d1 * specular;

@@ -103,4 +103,26 @@ class UtilTest {
         assertTrue(e.getMessage().contains(name), e.getMessage());
         assertTrue(e.getMessage().contains(value), e.getMessage());
     }
+
+    /**
+     * The highlight's integer power against {@link Math#pow} (within an ulp of exact): within 2n ulps for seeded
+     * bases in (0, 1] and exponents up to 1000, exact where the answer is, and 1 for the zeroth power.
+     */
+    @Test
+    void integerPowerIsWithinTwoNUlpsOfMathPow() {
+        Random random = new Random(0x5EED);
+        for (int i = 0; i < 20_000; i++) {
+            double x = 1 - random.nextDouble();
+            int n = i < 1000 ? i : random.nextInt(1001);
+            double expected = Math.pow(x, n);
+            double tolerance = (2 * n + 1) * Math.ulp(expected);
+            assertEquals(expected, Util.power(x, n), tolerance, x + "^" + n);
+        }
+        assertEquals(1, Util.power(0.3, 0));
+        assertEquals(0.3, Util.power(0.3, 1));
+        assertEquals(1024, Util.power(2, 10));
+        assertEquals(0, Util.power(0, 7));
+        assertEquals(1, Util.power(1, 999));
+        assertEquals(-0.125, Util.power(-0.5, 3));
+    }
 }
