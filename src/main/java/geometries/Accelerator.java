@@ -520,6 +520,7 @@ public final class Accelerator implements Intersectable {
      * the traversal would test them.
      */
     private boolean anyHitInBeam(ShadowBeam beam, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        if (beam.groups == 0) return false; // nothing near the beam: no set-up for the box test
         final float[] nodes = beam.leafNodes;
         final WideBoxTest boxTest = WideBoxTest.SELECTED;
         final float[] entries = scratch.entries;
