@@ -25,7 +25,9 @@ import java.util.List;
  * so leaves stay bounded. The binary tree is then collapsed ({@link WideCollapser}): a wide node starts from a
  * binary node's two children and repeatedly replaces the interior child with the most work below it (surface area
  * times primitives) by its two children until it has eight. A build may give a group of primitives (Accelerator's
- * clear surfaces) a subtree of its own under the root, which {@link #secondGroupSlots} names. The traversal lives in {@link Accelerator}, next to the primitive data it tests.
+ * clear surfaces) a subtree of its own under the root, which {@link #secondGroupSlots} names. The traversals live
+ * beside the primitive data they test, in the package-private ClosestHitTraversal and ShadowQueries of
+ * {@link Accelerator}.
  */
 public final class BVH {
     /** Deepest node level of the binary tree (and so of the wide tree); the traversal stack is sized from it. */

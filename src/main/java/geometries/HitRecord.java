@@ -105,7 +105,7 @@ public final class HitRecord {
      */
     void aimShadowBeam(
             int slot,
-            Accelerator accelerator,
+            ShadowQueries queries,
             double px,
             double py,
             double pz,
@@ -122,7 +122,7 @@ public final class HitRecord {
         }
         for (int i = first; i < first + BEAMS_PER_SLOT; i++) {
             ShadowBeam beam = shadowBeams[i];
-            if (beam != null && beam.serves(accelerator, px, py, pz, cx, cy, cz, radius)) {
+            if (beam != null && beam.serves(queries, px, py, pz, cx, cy, cz, radius)) {
                 activeBeam = beam;
                 return;
             }
@@ -131,7 +131,7 @@ public final class HitRecord {
         beamVictims[slot] = (beamVictims[slot] + 1) % BEAMS_PER_SLOT;
         if (shadowBeams[victim] == null) shadowBeams[victim] = new ShadowBeam();
         activeBeam = shadowBeams[victim];
-        activeBeam.aim(accelerator, px, py, pz, cx, cy, cz, radius);
+        activeBeam.aim(queries, px, py, pz, cx, cy, cz, radius);
     }
 
     void addTransparentHit(int id, double r, double g, double b) {

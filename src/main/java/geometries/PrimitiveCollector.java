@@ -88,7 +88,7 @@ final class PrimitiveCollector {
         parts[count] = part;
         owners[count] = owner;
         mayTransmit[count] = transmit;
-        clear[count] = Accelerator.isClear(owner);
+        clear[count] = CompiledPrimitives.isClear(owner);
         return count++;
     }
 
@@ -96,8 +96,8 @@ final class PrimitiveCollector {
         ensureCapacity(count + 1);
         objects[count] = g;
         objectBoxes[count] = g.getBoundingBox();
-        mayTransmit[count] = Accelerator.mayTransmit(g);
-        clear[count] = Accelerator.isClear(g);
+        mayTransmit[count] = CompiledPrimitives.mayTransmit(g);
+        clear[count] = CompiledPrimitives.isClear(g);
         count++;
     }
 

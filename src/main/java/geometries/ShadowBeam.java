@@ -48,8 +48,8 @@ final class ShadowBeam {
     }
 
     private State state = State.OFF;
-    /** The accelerator searched; a beam is only used with the accelerator it was collected from. */
-    private Accelerator owner;
+    /** The shadow queries (one accelerator's) the beam was aimed for; it is only used with the tree it searched. */
+    private ShadowQueries owner;
     /** The central segment: from (px, py, pz) to (cx, cy, cz), and the beam's radius around it (per axis). */
     private double px, py, pz, cx, cy, cz, radius;
     /** The leaves found, in groups of {@link BVH#WIDTH} laid out as BVH nodes (boxes, links, counts). */
@@ -66,11 +66,10 @@ final class ShadowBeam {
      * same tree: its start lies within 0.9 of the radius of the new one, so a segment from near the new start still
      * lies within the beam (checked per ray by {@link #covers}).
      */
-    boolean serves(
-            Accelerator accelerator, double px, double py, double pz, double cx, double cy, double cz, double r) {
+    boolean serves(ShadowQueries queries, double px, double py, double pz, double cx, double cy, double cz, double r) {
         double keep = 0.9 * r;
         return state != State.OFF
-                && owner == accelerator
+                && owner == queries
                 && cx == this.cx
                 && cy == this.cy
                 && cz == this.cz
@@ -81,10 +80,10 @@ final class ShadowBeam {
     }
 
     /** Aims the beam at segments from within {@code r} of (px, py, pz) to within {@code r} of (cx, cy, cz). */
-    void aim(Accelerator accelerator, double px, double py, double pz, double cx, double cy, double cz, double r) {
+    void aim(ShadowQueries queries, double px, double py, double pz, double cx, double cy, double cz, double r) {
         boolean usable = r > 0 && r < Double.POSITIVE_INFINITY && (cx != px || cy != py || cz != pz);
         state = usable ? State.AIMED : State.FULL;
-        owner = accelerator;
+        owner = queries;
         this.px = px;
         this.py = py;
         this.pz = pz;
@@ -99,8 +98,8 @@ final class ShadowBeam {
      * central segment's start and its end within the radius of the central segment's end, per axis. Then every
      * point of it lies within the radius of the central segment.
      */
-    boolean covers(Accelerator accelerator, Ray ray, double tMax) {
-        if (!(state == State.COLLECTED || state == State.AIMED) || owner != accelerator) return false;
+    boolean covers(ShadowQueries queries, Ray ray, double tMax) {
+        if (!(state == State.COLLECTED || state == State.AIMED) || owner != queries) return false;
         if (!(tMax < Double.POSITIVE_INFINITY)) return false;
         double ox = ray.ox(), oy = ray.oy(), oz = ray.oz();
         double ex = ox + ray.dx() * tMax, ey = oy + ray.dy() * tMax, ez = oz + ray.dz() * tMax;

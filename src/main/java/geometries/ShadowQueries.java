@@ -1,0 +1,267 @@
+package geometries;
+
+import primitives.Double3;
+import primitives.Ray;
+
+/**
+ * The shadow (any-hit) queries of an {@link Accelerator}: whether anything blocks a segment, and how much light
+ * passes through the transparent surfaces along it. A search stops at the first opaque hit, in any order, and skips
+ * clear surfaces (the BVH keeps them in a subtree of their own under the root). Before the search, the primitive
+ * that blocked the previous query through the record is tested (the occluder cache); within an aimed
+ * {@link ShadowBeam}, only the leaves the beam found are tested.
+ *
+ * <p>The public contracts are on {@link Accelerator#occludes}, {@link Accelerator#passesLight} and
+ * {@link Accelerator#aimShadowBeam}, which delegate here. Beams are aimed for one such object and used only with it.
+ */
+final class ShadowQueries {
+    private static final int OBJECT = CompiledPrimitives.OBJECT;
+
+    // The arrays of CompiledPrimitives these queries read, copied into final fields of the class that runs the
+    // loops: a loop reaches each in one load from this (loading them into locals measured about 2% slower on the
+    // street; reading them through the CompiledPrimitives object would add a load per access).
+    private final int boundedCount;
+    private final double[] triangles;
+    private final int[] info;
+    private final Geometry[] owners;
+    private final Intersectable[] objects;
+    private final boolean[] mayTransmit, clear;
+    private final Intersectable[] unbounded;
+    private final boolean[] unboundedMayTransmit, unboundedClear;
+    /** The BVH, or null for brute-force search. */
+    private final BVH bvh;
+
+    ShadowQueries(CompiledPrimitives primitives, BVH bvh) {
+        boundedCount = primitives.boundedCount;
+        triangles = primitives.triangles;
+        info = primitives.info;
+        owners = primitives.owners;
+        objects = primitives.objects;
+        mayTransmit = primitives.mayTransmit;
+        clear = primitives.clear;
+        unbounded = primitives.unbounded;
+        unboundedMayTransmit = primitives.unboundedMayTransmit;
+        unboundedClear = primitives.unboundedClear;
+        this.bvh = bvh;
+    }
+
+    /** See {@link Accelerator#occludes}. */
+    boolean occludes(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        return anyHit(ray, tMin, tMax, scratch, false);
+    }
+
+    /** See {@link Accelerator#passesLight}. */
+    boolean passesLight(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        scratch.transparentCount = 0;
+        if (anyHit(ray, tMin, tMax, scratch, true)) {
+            scratch.transmitR = scratch.transmitG = scratch.transmitB = 0;
+            return false;
+        }
+        int count = scratch.transparentCount;
+        double r = 1, g = 1, b = 1;
+        if (count > 2) scratch.sortTransparentHits();
+        double[] kt = scratch.transparentKt;
+        for (int i = 0; i < 3 * count; i += 3) {
+            r *= kt[i];
+            g *= kt[i + 1];
+            b *= kt[i + 2];
+        }
+        scratch.transmitR = r;
+        scratch.transmitG = g;
+        scratch.transmitB = b;
+        return true;
+    }
+
+    /** See {@link Accelerator#aimShadowBeam}. */
+    void aimBeam(
+            HitRecord scratch,
+            int slot,
+            double px,
+            double py,
+            double pz,
+            double cx,
+            double cy,
+            double cz,
+            double radius) {
+        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
+        // Brute force, or a tree too small for a search to cost more than a beam's own set-up: nothing to share.
+        if (bvh == null || boundedCount < ShadowBeam.MIN_PRIMITIVES) return;
+        scratch.aimShadowBeam(slot, this, px, py, pz, cx, cy, cz, radius);
+    }
+
+    /**
+     * The shadow query within a beam: the leaves the beam found, eight boxes per test, then their primitives, as
+     * the traversal would test them.
+     */
+    private boolean anyHitInBeam(ShadowBeam beam, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        if (beam.groups == 0) return false; // nothing near the beam: no set-up for the box test
+        final float[] nodes = beam.leafNodes;
+        final WideBoxTest boxTest = WideBoxTest.SELECTED;
+        final float[] entries = scratch.entries;
+        final RaySlabs slabs = scratch.slabs;
+        slabs.set(ray);
+        final float tMinF = RaySlabs.below(tMin), tMaxF = RaySlabs.above(tMax);
+        long tests = 0;
+        try {
+            for (int g = 0, groups = beam.groups; g < groups; g++) {
+                int o = BVH.NODE_STRIDE * g;
+                scratch.nodeVisits += BVH.WIDTH;
+                int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries);
+                for (; mask != 0; mask &= mask - 1) {
+                    int c = Integer.numberOfTrailingZeros(mask);
+                    int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                    int end = link + Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                    for (int k = link; k < end; k++) {
+                        if (clear[k]) continue;
+                        tests++;
+                        if (blocks(k, mayTransmit[k], ray, tMin, tMax, scratch)) {
+                            if (!mayTransmit[k]) scratch.occluder = k;
+                            return true;
+                        }
+                    }
+                }
+            }
+            return false;
+        } finally {
+            scratch.primitiveTests += tests;
+        }
+    }
+
+    /**
+     * Any-hit search; returns true at the first blocking hit. With {@code honourTransparency}, hits on transparent
+     * surfaces do not block but are collected in the scratch record.
+     */
+    private boolean anyHit(Ray ray, double tMin, double tMax, HitRecord scratch, boolean honourTransparency) {
+        scratch.withoutBvh = bvh == null;
+        scratch.occluder = -1;
+        if (blockedByHint(ray, tMin, tMax, scratch)) return true;
+        long tests = 0;
+        try {
+            for (int j = 0; j < unbounded.length; j++) {
+                if (honourTransparency && unboundedClear[j]) continue;
+                tests++;
+                boolean pass = honourTransparency && unboundedMayTransmit[j];
+                if (blocks(unbounded[j], boundedCount + j, pass, ray, tMin, tMax, scratch)) return true;
+            }
+            if (bvh == null) {
+                for (int k = 0; k < boundedCount; k++) {
+                    if (honourTransparency && clear[k]) continue;
+                    tests++;
+                    if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                        if (!mayTransmit[k]) scratch.occluder = k;
+                        return true;
+                    }
+                }
+                return false;
+            }
+            if (boundedCount == 0) return false;
+            ShadowBeam beam = scratch.activeBeam;
+            if (beam != null
+                    && honourTransparency
+                    && tMin >= 0
+                    && beam.covers(this, ray, tMax)
+                    && beam.ready(bvh, scratch)) {
+                return anyHitInBeam(beam, ray, tMin, tMax, scratch);
+            }
+            final float[] nodes = bvh.nodes;
+            final WideBoxTest boxTest = WideBoxTest.SELECTED;
+            final int[] stack = scratch.stack;
+            final float[] entries = scratch.entries;
+            final RaySlabs slabs = scratch.slabs;
+            slabs.set(ray);
+            final float tMinF = RaySlabs.below(tMin), tMaxF = RaySlabs.above(tMax);
+            long visits = 1; // the root, as the statistics have always counted it
+            int sp = 0;
+            int link = bvh.rootLink, count = bvh.rootCount;
+            // The root's slots of clear surfaces only, left out of a shadow query (the first node visited).
+            int skip = honourTransparency ? bvh.secondGroupSlots : 0;
+            boolean more = true; // no test of the root's own box, as in the closest-hit traversal
+            try {
+                while (more) {
+                    if (count > 0) {
+                        for (int k = link, end = link + count; k < end; k++) {
+                            if (honourTransparency && clear[k]) continue;
+                            tests++;
+                            if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                                if (!mayTransmit[k]) scratch.occluder = k;
+                                return true;
+                            }
+                        }
+                    } else {
+                        int o = BVH.NODE_STRIDE * link;
+                        visits += BVH.WIDTH;
+                        // Any hit will do: no ordering, postpone every child hit but the first. (Taking the
+                        // nearest first measured the same on the street's shadow rays, docs/BENCHMARKS.md.)
+                        int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries) & ~skip;
+                        skip = 0;
+                        if (mask != 0) {
+                            int c = Integer.numberOfTrailingZeros(mask);
+                            link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                            count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                            for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                                c = Integer.numberOfTrailingZeros(mask);
+                                stack[2 * sp] = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                                stack[2 * sp++ + 1] = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                            }
+                            continue;
+                        }
+                    }
+                    more = sp > 0;
+                    if (more) {
+                        sp--;
+                        link = stack[2 * sp];
+                        count = stack[2 * sp + 1];
+                    }
+                }
+                return false;
+            } finally {
+                scratch.nodeVisits += visits;
+            }
+        } finally {
+            scratch.primitiveTests += tests;
+        }
+    }
+
+    /**
+     * The occluder cache: whether the opaque primitive in slot {@code scratch.occluderHint} blocks the segment.
+     * (Its own method, so that the traversal loop stays small enough for the JIT to inline the box test.)
+     */
+    private boolean blockedByHint(Ray ray, double tMin, double tMax, HitRecord scratch) {
+        int hint = scratch.occluderHint;
+        if (hint < 0 || hint >= boundedCount || mayTransmit[hint]) return false;
+        scratch.primitiveTests++;
+        if (!blocks(hint, false, ray, tMin, tMax, scratch)) return false;
+        scratch.occluder = hint;
+        return true;
+    }
+
+    /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */
+    private boolean blocks(int k, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        int edges = info[2 * k + 1];
+        if (edges == OBJECT) return blocks(objects[k], info[2 * k], mayPass, ray, tMin, tMax, scratch);
+        int o = 9 * k;
+        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, scratch)) {
+            return false;
+        }
+        if (!mayPass) return true;
+        Double3 kT = owners[k].getMaterial().getKt();
+        if (kT.isZero()) return true;
+        scratch.addTransparentHit(info[2 * k], kT.d1, kT.d2, kT.d3);
+        return false;
+    }
+
+    /** Whether {@code object}, primitive {@code id}, blocks the segment; a transparent one is collected instead. */
+    private static boolean blocks(
+            Intersectable object, int id, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        if (!mayPass) return object.occludes(ray, tMin, tMax, scratch);
+        if (object instanceof Instance instance) return instance.blocksLight(ray, tMin, tMax, scratch, id);
+        // Every crossing of a transparent surface attenuates: walk all hits of this primitive in the segment.
+        double from = tMin;
+        while (object.intersect(ray, from, tMax, scratch)) {
+            Double3 kT = scratch.geometry.getMaterial().getKt();
+            if (kT.isZero()) return true;
+            scratch.addTransparentHit(id, kT.d1, kT.d2, kT.d3);
+            from = scratch.t;
+        }
+        return false;
+    }
+}
