@@ -141,9 +141,9 @@ final class ProgressiveSampler {
      * keep their estimate of zero.)
      */
     double predictedError() {
-        double[] variance = sampleVariances(errors());
+        double[] mean = smoothed(sampleVariances(errors()), false);
         double sum = 0;
-        for (int p = 0, n = done.length; p < n; p++) sum += smoothed(variance, p, false) / (2.0 * done[p]);
+        for (int p = 0, n = done.length; p < n; p++) sum += mean[p] / (2.0 * done[p]);
         return Math.sqrt(sum / done.length);
     }
 
@@ -167,12 +167,9 @@ final class ProgressiveSampler {
      */
     long planForError(double target) {
         double[] variance = sampleVariances(errors());
-        double[] mean = new double[variance.length], weight = weights(variance);
+        double[] mean = smoothed(variance, false), weight = weights(variance);
         double mse = 0;
-        for (int p = 0; p < variance.length; p++) {
-            mean[p] = smoothed(variance, p, false);
-            mse += mean[p] / (2.0 * done[p]);
-        }
+        for (int p = 0; p < variance.length; p++) mse += mean[p] / (2.0 * done[p]);
         mse /= variance.length;
         if (mse <= target * target) return 0;
         // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
@@ -235,10 +232,10 @@ final class ProgressiveSampler {
      * to its first samples.
      */
     private double[] weights(double[] variance) {
-        double[] weight = new double[variance.length];
+        double[] weight = smoothed(variance, true);
         double mean = 0;
         for (int p = 0; p < variance.length; p++) {
-            weight[p] = Math.sqrt(smoothed(variance, p, true));
+            weight[p] = Math.sqrt(weight[p]);
             mean += weight[p];
         }
         mean /= variance.length;
@@ -260,23 +257,28 @@ final class ProgressiveSampler {
     }
 
     /**
-     * The mean (or, with {@code largest}, the largest) of {@code values} over the 3 x 3 neighbourhood of pixel
-     * {@code p}: neighbours see much the same noise, and an edge that one pixel's samples all missed is often seen
-     * by a neighbour's.
+     * Per pixel, the mean (or, with {@code largest}, the largest) of {@code values} over its 3 x 3 neighbourhood:
+     * neighbours see much the same noise, and an edge that one pixel's samples all missed is often seen by a
+     * neighbour's. One pass over the image in pixel order, each neighbourhood summed row by row.
      */
-    private double smoothed(double[] values, int p, boolean largest) {
-        int x = p % nX, y = p / nX;
-        double sum = 0, max = 0;
-        int count = 0;
-        for (int j = Math.max(0, y - 1); j <= Math.min(nY - 1, y + 1); j++) {
-            for (int i = Math.max(0, x - 1); i <= Math.min(nX - 1, x + 1); i++) {
-                double v = values[j * nX + i];
-                sum += v;
-                max = Math.max(max, v);
-                count++;
+    private double[] smoothed(double[] values, boolean largest) {
+        double[] out = new double[values.length];
+        for (int y = 0; y < nY; y++) {
+            int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
+            for (int x = 0; x < nX; x++) {
+                int i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
+                double sum = 0, max = 0;
+                for (int j = j0; j <= j1; j++) {
+                    for (int i = i0; i <= i1; i++) {
+                        double v = values[j * nX + i];
+                        sum += v;
+                        max = Math.max(max, v);
+                    }
+                }
+                out[y * nX + x] = largest ? max : sum / ((j1 - j0 + 1) * (i1 - i0 + 1));
             }
         }
-        return largest ? max : sum / count;
+        return out;
     }
 
     /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
