@@ -84,6 +84,14 @@ public final class HitRecord {
     public int occluderHint = -1, occluder = -1;
 
     /**
+     * The flat surface the shadow queries through this record leave (null: none), and which of its triangles (-1:
+     * all of it), set by {@link #leaveSurface}. Those queries do not test it: their segments start on it.
+     */
+    Geometry leaving;
+
+    int leavingPart = -1;
+
+    /**
      * Transparent surfaces a shadow ray crossed: primitive id and kT (red, green, blue), multiplied in id order. An
      * instance adds the product of its own surfaces' kT as one factor.
      */
@@ -170,6 +178,30 @@ public final class HitRecord {
      *
      * @return this record
      */
+    /**
+     * Tells the shadow queries through this record that their segments start on {@code surface}, at a point offset
+     * off it toward the side they travel (as the renderer spawns shadow rays), so that where the surface is flat they
+     * leave it out: a segment leaving a plane toward one side cannot meet that plane again. Flat means a polygon or
+     * triangle (all of it), a plane, or triangle {@code part} of a mesh; any other surface, or null, leaves out
+     * nothing. Pass null for a surface inside an instance (its prototype stands in other places too). The setting
+     * holds until the next call.
+     *
+     * @param surface the surface the segments start on, or null
+     * @param part the part of it hit ({@link #part}: a mesh's triangle)
+     */
+    public void leaveSurface(Geometry surface, int part) {
+        if (surface instanceof Polygon || surface instanceof Plane) {
+            leaving = surface;
+            leavingPart = -1;
+        } else if (surface instanceof Mesh) {
+            leaving = surface;
+            leavingPart = part;
+        } else {
+            leaving = null;
+            leavingPart = -1;
+        }
+    }
+
     public HitRecord reset() {
         t = Double.POSITIVE_INFINITY;
         geometry = null;

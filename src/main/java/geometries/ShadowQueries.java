@@ -23,6 +23,7 @@ final class ShadowQueries {
     private final double[] triangles;
     private final int[] info;
     private final Geometry[] owners;
+    private final int[] parts;
     private final Intersectable[] objects;
     private final boolean[] mayTransmit, clear;
     private final Intersectable[] unbounded;
@@ -35,6 +36,7 @@ final class ShadowQueries {
         triangles = primitives.triangles;
         info = primitives.info;
         owners = primitives.owners;
+        parts = primitives.parts;
         objects = primitives.objects;
         mayTransmit = primitives.mayTransmit;
         clear = primitives.clear;
@@ -111,7 +113,7 @@ final class ShadowQueries {
                     int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
                     int end = link + Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
                     for (int k = link; k < end; k++) {
-                        if (clear[k]) continue;
+                        if (clear[k] || leftBy(k, scratch)) continue;
                         tests++;
                         if (blocks(k, mayTransmit[k], ray, tMin, tMax, scratch)) {
                             if (!mayTransmit[k]) scratch.occluder = k;
@@ -137,14 +139,14 @@ final class ShadowQueries {
         long tests = 0;
         try {
             for (int j = 0; j < unbounded.length; j++) {
-                if (honourTransparency && unboundedClear[j]) continue;
+                if (honourTransparency && unboundedClear[j] || unbounded[j] == scratch.leaving) continue;
                 tests++;
                 boolean pass = honourTransparency && unboundedMayTransmit[j];
                 if (blocks(unbounded[j], boundedCount + j, pass, ray, tMin, tMax, scratch)) return true;
             }
             if (bvh == null) {
                 for (int k = 0; k < boundedCount; k++) {
-                    if (honourTransparency && clear[k]) continue;
+                    if (honourTransparency && clear[k] || leftBy(k, scratch)) continue;
                     tests++;
                     if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
                         if (!mayTransmit[k]) scratch.occluder = k;
@@ -179,7 +181,7 @@ final class ShadowQueries {
                 while (more) {
                     if (count > 0) {
                         for (int k = link, end = link + count; k < end; k++) {
-                            if (honourTransparency && clear[k]) continue;
+                            if (honourTransparency && clear[k] || leftBy(k, scratch)) continue;
                             tests++;
                             if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
                                 if (!mayTransmit[k]) scratch.occluder = k;
@@ -222,12 +224,21 @@ final class ShadowQueries {
     }
 
     /**
+     * Whether bounded primitive {@code k} is (part of) the flat surface the query's segment leaves
+     * ({@link HitRecord#leaveSurface}), which it cannot meet again.
+     */
+    private boolean leftBy(int k, HitRecord scratch) {
+        Geometry surface = scratch.leaving;
+        return surface != null && owners[k] == surface && (scratch.leavingPart < 0 || parts[k] == scratch.leavingPart);
+    }
+
+    /**
      * The occluder cache: whether the opaque primitive in slot {@code scratch.occluderHint} blocks the segment.
      * (Its own method, so that the traversal loop stays small enough for the JIT to inline the box test.)
      */
     private boolean blockedByHint(Ray ray, double tMin, double tMax, HitRecord scratch) {
         int hint = scratch.occluderHint;
-        if (hint < 0 || hint >= boundedCount || mayTransmit[hint]) return false;
+        if (hint < 0 || hint >= boundedCount || mayTransmit[hint] || leftBy(hint, scratch)) return false;
         scratch.primitiveTests++;
         if (!blocks(hint, false, ray, tMin, tMax, scratch)) return false;
         scratch.occluder = hint;

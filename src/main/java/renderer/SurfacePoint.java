@@ -30,6 +30,11 @@ public final class SurfacePoint {
     /** The hit point's texture coordinates (0 where the geometry has none). */
     public double texU, texV;
 
+    /** The part of the geometry hit ({@link HitRecord#part}: a mesh's triangle). */
+    public int part;
+    /** Whether the geometry was hit inside an instance (then it stands in other places too). */
+    public boolean inInstance;
+
     private double errorX, errorY, errorZ;
     /** The origin the last {@link #spawn} computed. */
     public double originX, originY, originZ;
@@ -74,6 +79,8 @@ public final class SurfacePoint {
         errorZ = hit.errorZ;
         texU = hit.texU;
         texV = hit.texV;
+        part = hit.part;
+        inInstance = hit.instance != null;
         return this;
     }
 

@@ -317,6 +317,54 @@ class AcceleratorTest {
         }
     }
 
+    /**
+     * {@link HitRecord#leaveSurface}: shadow queries leave out the flat surface their segments start on: a polygon
+     * whole, a plane, one triangle of a mesh (its neighbours still block), nothing for a sphere or null. The segments
+     * here cross the surface on purpose (a renderer's never do), so that leaving it out shows; tree, brute force and
+     * a beam agree.
+     */
+    @Test
+    void shadowQueriesLeaveOutTheFlatSurfaceTheyStartOn() {
+        Polygon square =
+                new Polygon(new Point(-1, -1, 1), new Point(1, -1, 1), new Point(1, 1, 1), new Point(-1, 1, 1));
+        // A mesh of two triangles over the unit square at z = 2 (part 0 holds x > y, part 1 the rest).
+        Mesh roof = new Mesh(new double[] {0, 0, 2, 1, 0, 2, 1, 1, 2, 0, 1, 2}, new int[] {0, 1, 2, 0, 2, 3});
+        Plane floor = new Plane(new Point(0, 0, 3), Vector.AXIS_Z);
+        Sphere ball = new Sphere(new Point(5, 5, 1), 0.5);
+        Geometries scene = new Geometries(square, roof, floor, ball);
+        // Enough small triangles far away for the scene to get beams.
+        for (int i = 0; i < 70; i++) {
+            scene.add(new Triangle(new Point(50 + i, 50, 0), new Point(50.5 + i, 50, 0), new Point(50 + i, 50.5, 0)));
+        }
+        Ray throughSquare = Hits.ray(0.1, 0.1, 0, 0, 0, 1); // the square at t = 1
+        Ray throughRoofPart0 = Hits.ray(0.7, 0.2, 1.5, 0, 0, 1); // the roof's part 0 at t = 0.5
+        Ray throughRoofPart1 = Hits.ray(0.2, 0.7, 1.5, 0, 0, 1); // the roof's part 1 at t = 0.5
+        Ray throughFloor = Hits.ray(3, 3, 2.5, 0, 0, 1); // the plane at t = 0.5
+        Ray throughBall = Hits.ray(5, 5, 0, 0, 0, 1); // the sphere at t = 0.5
+        for (boolean bvh : new boolean[] {true, false}) {
+            Accelerator acc = Accelerator.build(scene, bvh);
+            HitRecord shadow = new HitRecord();
+            assertFalse(acc.passesLight(throughSquare, 0, 1.5, shadow), "nothing left out yet");
+            shadow.leaveSurface(square, 0);
+            assertTrue(acc.passesLight(throughSquare, 0, 1.5, shadow), "the square left out");
+            shadow.leaveSurface(roof, 0);
+            assertTrue(acc.passesLight(throughRoofPart0, 0, 0.9, shadow), "the roof's part 0 left out");
+            assertFalse(acc.passesLight(throughRoofPart1, 0, 0.9, shadow), "its other triangle still blocks");
+            shadow.leaveSurface(floor, 0);
+            assertTrue(acc.passesLight(throughFloor, 0, 1, shadow), "the plane left out");
+            shadow.leaveSurface(ball, 0);
+            assertFalse(acc.passesLight(throughBall, 0, 1, shadow), "a sphere is not flat: never left out");
+            shadow.leaveSurface(null, 0);
+            assertFalse(acc.passesLight(throughSquare, 0, 1.5, shadow), "null leaves out nothing");
+            // Through a beam aimed along the segment: the same answers.
+            shadow.leaveSurface(square, 0);
+            acc.aimShadowBeam(shadow, 0, 0.1, 0.1, 0, 0.1, 0.1, 1.5, 0.25);
+            assertTrue(acc.passesLight(throughSquare, 0, 1.5, shadow), "the square left out within the beam");
+            shadow.leaveSurface(null, 0);
+            assertFalse(acc.passesLight(throughSquare, 0, 1.5, shadow), "and tested within it otherwise");
+        }
+    }
+
     @Test
     void emptyAndUnboundedScenes() {
         Accelerator empty = Accelerator.build(new Geometries(), true);
