@@ -183,8 +183,9 @@ public final class HitRecord {
      * off it toward the side they travel (as the renderer spawns shadow rays), so that where the surface is flat they
      * leave it out: a segment leaving a plane toward one side cannot meet that plane again. Flat means a polygon or
      * triangle (all of it), a plane, or triangle {@code part} of a mesh; any other surface, or null, leaves out
-     * nothing. Pass null for a surface inside an instance (its prototype stands in other places too). The setting
-     * holds until the next call.
+     * nothing. A polygon counts as flat as a whole: it is validated planar, and its fan of triangles bends, if at all,
+     * by less than that tolerance, which no surface of the scene is meant to shade itself through. Pass null for a
+     * surface inside an instance (its prototype stands in other places too). The setting holds until the next call.
      *
      * @param surface the surface the segments start on, or null
      * @param part the part of it hit ({@link #part}: a mesh's triangle)
