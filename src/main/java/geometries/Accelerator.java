@@ -280,7 +280,10 @@ public final class Accelerator implements Intersectable {
             double cy,
             double cz,
             double radius) {
-        shadows.aimBeam(scratch, slot, px, py, pz, cx, cy, cz, radius);
+        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
+        // Brute force, or a tree too small for a search to cost more than a beam's own set-up: nothing to share.
+        if (bvh == null || primitives.boundedCount < ShadowBeam.MIN_PRIMITIVES) return;
+        scratch.aimShadowBeam(slot, shadows, px, py, pz, cx, cy, cz, radius);
     }
 
     /** Whether any primitive may let light through. */

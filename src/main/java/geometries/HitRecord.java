@@ -174,11 +174,6 @@ public final class HitRecord {
     }
 
     /**
-     * Forgets the previous hit so the record can take a new query.
-     *
-     * @return this record
-     */
-    /**
      * Tells the shadow queries through this record that their segments start on {@code surface}, at a point offset
      * off it toward the side they travel (as the renderer spawns shadow rays), so that where the surface is flat they
      * leave it out: a segment leaving a plane toward one side cannot meet that plane again. Flat means a polygon or
@@ -203,6 +198,11 @@ public final class HitRecord {
         }
     }
 
+    /**
+     * Forgets the previous hit so the record can take a new query.
+     *
+     * @return this record
+     */
     public HitRecord reset() {
         t = Double.POSITIVE_INFINITY;
         geometry = null;

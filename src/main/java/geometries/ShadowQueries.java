@@ -73,23 +73,6 @@ final class ShadowQueries {
         return true;
     }
 
-    /** See {@link Accelerator#aimShadowBeam}. */
-    void aimBeam(
-            HitRecord scratch,
-            int slot,
-            double px,
-            double py,
-            double pz,
-            double cx,
-            double cy,
-            double cz,
-            double radius) {
-        if (slot < 0) throw new IllegalArgumentException("beam slot must be at least 0, but was " + slot);
-        // Brute force, or a tree too small for a search to cost more than a beam's own set-up: nothing to share.
-        if (bvh == null || boundedCount < ShadowBeam.MIN_PRIMITIVES) return;
-        scratch.aimShadowBeam(slot, this, px, py, pz, cx, cy, cz, radius);
-    }
-
     /**
      * The shadow query within a beam: the leaves the beam found, eight boxes per test, then their primitives, as
      * the traversal would test them.

@@ -44,8 +44,7 @@ public class Ray {
 
     /**
      * Sets every field from an origin and a direction that need not be unit: normalized exactly as
-     * {@link Vector#normalize()} does, so a reusable ray and a constructed
-     * one along the same vector agree bit for bit.
+     * {@link Vector#normalize()} does, so a reusable ray and a constructed one along the same vector agree bit for bit.
      */
     final void init(double ox, double oy, double oz, double vx, double vy, double vz) {
         head = null;

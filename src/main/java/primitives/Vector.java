@@ -124,7 +124,7 @@ public final class Vector extends Point {
      * @return the Euclidean length
      */
     public static double length(double x, double y, double z) {
-        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        double m = largestMagnitude(x, y, z);
         if (squaresInRange(m)) return Math.sqrt(x * x + y * y + z * z);
         int shift = exponentShift(m);
         double sx = Math.scalb(x, shift), sy = Math.scalb(y, shift), sz = Math.scalb(z, shift);
@@ -167,7 +167,7 @@ public final class Vector extends Point {
      * @return the factor, or 0 where {@link #unitComponent} applies
      */
     public static double unitFactor(double x, double y, double z) {
-        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        double m = largestMagnitude(x, y, z);
         if (!squaresInRange(m) || onAxis(x, y, z)) return 0;
         return 1 / Math.sqrt(x * x + y * y + z * z);
     }
@@ -186,7 +186,7 @@ public final class Vector extends Point {
      */
     public static double unitComponent(double c, double x, double y, double z) {
         if (onAxis(x, y, z)) return Math.signum(c);
-        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        double m = largestMagnitude(x, y, z);
         int shift = squaresInRange(m) ? 0 : exponentShift(m);
         double sx = Math.scalb(x, shift), sy = Math.scalb(y, shift), sz = Math.scalb(z, shift);
         return Math.scalb(c, shift) * (1 / Math.sqrt(sx * sx + sy * sy + sz * sz));
@@ -206,7 +206,8 @@ public final class Vector extends Point {
         return new Vector(Math.abs(x), Math.abs(y), Math.abs(z));
     }
 
-    private double maxAbsComponent() {
+    /** The largest magnitude of the three components. */
+    private static double largestMagnitude(double x, double y, double z) {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 

@@ -297,6 +297,9 @@ public class SimpleRayTracer extends RayTracerBase {
         }
         double r = 0, g = 0, b = 0;
         double unshadowed = 0, passed = 0;
+        // The shadow rays start on the point's surface, offset toward the light's side: a flat surface cannot block
+        // them, so the queries leave it out (on the street, 83% of the primitive tests within beams were of it).
+        ctx.shadowHit.leaveSurface(sp.inInstance ? null : sp.geometry, sp.part);
         for (int li = 0; li < lights.length; li++) {
             int state = direct.state[li];
             if (state == DirectLighting.SKIP || state == DirectLighting.SET_ASIDE) continue;
@@ -353,9 +356,6 @@ public class SimpleRayTracer extends RayTracerBase {
      */
     private void visibility(
             LightSource light, int li, SurfacePoint sp, LightSample ls, TraceContext ctx, long path, int[] occluders) {
-        // The shadow rays start on the point's surface, offset toward the light's side: a flat surface cannot block
-        // them, so the queries leave it out (most of the primitive tests of the street's shadow rays were of it).
-        ctx.shadowHit.leaveSurface(sp.inInstance ? null : sp.geometry, sp.part);
         Point position = light.getPosition();
         if (position == null) {
             shadowToward(sp, -ls.lx, -ls.ly, -ls.lz, Double.POSITIVE_INFINITY, li, occluders, ctx);

@@ -360,6 +360,9 @@ class AcceleratorTest {
             shadow.leaveSurface(square, 0);
             acc.aimShadowBeam(shadow, 0, 0.1, 0.1, 0, 0.1, 0.1, 1.5, 0.25);
             assertTrue(acc.passesLight(throughSquare, 0, 1.5, shadow), "the square left out within the beam");
+            if (bvh)
+                assertTrue(
+                        shadow.activeBeam != null && shadow.activeBeam.collected(), "the query went through the beam");
             shadow.leaveSurface(null, 0);
             assertFalse(acc.passesLight(throughSquare, 0, 1.5, shadow), "and tested within it otherwise");
         }
