@@ -23,6 +23,12 @@ final class ClosestHitTraversal {
     private final Intersectable[] unbounded;
     /** The BVH, or null for brute-force search. */
     private final BVH bvh;
+    /**
+     * Whether queries search the tree: not over a single bounded primitive, where the root's slabs would be set up
+     * only to reach the one test that brute force makes directly (8-10% of a warm render of the POV-Ray comparison
+     * scene, a plane and a sphere).
+     */
+    private final boolean searchesTree;
 
     ClosestHitTraversal(CompiledPrimitives primitives, BVH bvh) {
         boundedCount = primitives.boundedCount;
@@ -33,6 +39,7 @@ final class ClosestHitTraversal {
         objects = primitives.objects;
         unbounded = primitives.unbounded;
         this.bvh = bvh;
+        searchesTree = bvh != null && boundedCount > 1;
     }
 
     /** See {@link Accelerator#intersect}. */
@@ -54,7 +61,7 @@ final class ClosestHitTraversal {
                 bestObject = -1;
             }
         }
-        if (bvh == null) {
+        if (!searchesTree) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
                 if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
