@@ -175,14 +175,15 @@ final class ProgressiveSampler {
         // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
         // (every pixel at most GROWTH times its samples), the least lambda that comes within 2% of the best this pass
         // can do: beyond it, only pixels that look flat would take more samples, and they change little.
-        double reachable = 1.02 * predictedMse(mean, weight, Double.POSITIVE_INFINITY);
+        int[] noisy = noisyPixels(mean);
+        double reachable = 1.02 * predictedMse(mean, weight, Double.POSITIVE_INFINITY, noisy);
         double goalMse = Math.max(target * target, reachable);
         double lo = 0, hi = 1;
-        while (predictedMse(mean, weight, hi) > goalMse && hi < 1e30) hi *= 2;
+        while (predictedMse(mean, weight, hi, noisy) > goalMse && hi < 1e30) hi *= 2;
         // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
         while (hi - lo > 1e-3 * hi) {
             double mid = (lo + hi) / 2;
-            if (predictedMse(mean, weight, mid) > goalMse) lo = mid;
+            if (predictedMse(mean, weight, mid, noisy) > goalMse) lo = mid;
             else hi = mid;
         }
         return setGoals(weight, hi);
@@ -267,6 +268,21 @@ final class ProgressiveSampler {
             int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
             for (int x = 0; x < nX; x++) {
                 int i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
+                if (j1 - j0 == 2 && i1 - i0 == 2) {
+                    // A whole neighbourhood, unrolled: the same sums in the same order as the loops below.
+                    int a = j0 * nX + i0, b = a + nX, c = b + nX;
+                    double v0 = values[a], v1 = values[a + 1], v2 = values[a + 2];
+                    double v3 = values[b], v4 = values[b + 1], v5 = values[b + 2];
+                    double v6 = values[c], v7 = values[c + 1], v8 = values[c + 2];
+                    out[y * nX + x] = largest
+                            ? Math.max(
+                                    Math.max(
+                                            Math.max(Math.max(Math.max(Math.max(0, v0), v1), v2), v3),
+                                            Math.max(Math.max(v4, v5), v6)),
+                                    Math.max(v7, v8))
+                            : (0 + v0 + v1 + v2 + v3 + v4 + v5 + v6 + v7 + v8) / 9;
+                    continue;
+                }
                 double sum = 0, max = 0;
                 for (int j = j0; j <= j1; j++) {
                     for (int i = i0; i <= i1; i++) {
@@ -288,11 +304,26 @@ final class ProgressiveSampler {
         return (int) Math.max(done[p], Math.min(max, wanted));
     }
 
-    /** The image MSE the 1/n law predicts for per-sample variances {@code variance} after planning with lambda. */
-    private double predictedMse(double[] variance, double[] weight, double lambda) {
+    /**
+     * The image MSE the 1/n law predicts for per-sample variances {@code variance} after planning with lambda, summed
+     * over the pixels {@code noisy} (those of non-zero variance: the others add exactly zero).
+     */
+    private double predictedMse(double[] variance, double[] weight, double lambda, int[] noisy) {
         double sum = 0;
-        for (int p = 0; p < variance.length; p++) sum += variance[p] / (2.0 * halfGoal(weight, lambda, p));
+        for (int p : noisy) sum += variance[p] / (2.0 * halfGoal(weight, lambda, p));
         return sum / variance.length;
+    }
+
+    /**
+     * The pixels whose variance is not zero, in order. The search for the plan's lambda sums the predicted MSE some
+     * 25 times; where most of the image is converged (a soft shadow's lit ground and umbra), most terms are zero.
+     */
+    private static int[] noisyPixels(double[] variance) {
+        int count = 0;
+        for (double v : variance) if (v != 0) count++;
+        int[] noisy = new int[count];
+        for (int p = 0, k = 0; p < variance.length; p++) if (variance[p] != 0) noisy[k++] = p;
+        return noisy;
     }
 
     private long extra(double[] weight, double lambda) {
