@@ -132,8 +132,9 @@ final class PixelSampler {
         double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
         if (antiAliasing.getSampleCount() == 1) {
             // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
-            // after the first, the pinhole's ray and its first hit are the same, and are reused.
-            if (again && !lens) rayTracer.traceAgain(camera.rayThrough(u, v, ctx.ray), ctx, path);
+            // after the first, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
+            // reused.
+            if (again && !lens) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
             else sample(u, v, path, ctx);
         } else {
             // The half's shifted Halton point over the pixel's area.
@@ -153,7 +154,7 @@ final class PixelSampler {
     private void sample(double u, double v, long path, TraceContext ctx) {
         if (!lens) {
             ctx.counters.camera++;
-            rayTracer.trace(camera.rayThrough(u, v, ctx.ray), ctx, path);
+            rayTracer.trace(camera.rayThrough(u, v, ctx.cameraRay), ctx, path);
             return;
         }
         int count = apertureSampling.getSampleCount();
@@ -178,7 +179,7 @@ final class PixelSampler {
             double ox = location.x + a * vRight.x + b * vUp.x;
             double oy = location.y + a * vRight.y + b * vUp.y;
             double oz = location.z + a * vRight.z + b * vUp.z;
-            Ray ray = ctx.ray.set(ox, oy, oz, fx - ox, fy - oy, fz - oz);
+            Ray ray = ctx.cameraRay.set(ox, oy, oz, fx - ox, fy - oy, fz - oz);
             ctx.counters.camera++;
             ctx.counters.depthOfField++;
             // A zero aperture (planning off) fires identical rays: same path, so the mean is exact.

@@ -16,7 +16,9 @@ public final class TraceContext {
     public final HitRecord hit = new HitRecord();
     /** Record of shadow queries (kept apart so shading data survives them). */
     public final HitRecord shadowHit = new HitRecord();
-    /** The ray of closest-hit queries: camera, reflection and refraction rays, set anew for each. */
+    /** The camera's rays. Nothing else sets it, so a progressive sample of the same pixel centre can reuse it. */
+    public final ReusableRay cameraRay = new ReusableRay();
+    /** The ray of the other closest-hit queries: reflection and refraction rays, set anew for each. */
     public final ReusableRay ray = new ReusableRay();
     /** The ray of shadow queries. */
     public final ReusableRay shadowRay = new ReusableRay();
