@@ -179,16 +179,17 @@ public final class SuperSamplingBlackboard {
             out[at + 1] = 0;
             return;
         }
-        double r, theta;
+        // The angle is pi/4 (b/a) in the first case, pi/2 - pi/4 (a/b) in the second, whose cosine and sine are the
+        // sine and cosine of pi/4 (a/b): both quarter angles lie within [-pi/4, pi/4].
         if (Math.abs(a) > Math.abs(b)) {
-            r = a;
-            theta = Math.PI / 4 * (b / a);
+            double phi = Math.PI / 4 * (b / a);
+            out[at] = 0.5 * a * SmallAngle.cos(phi);
+            out[at + 1] = 0.5 * a * SmallAngle.sin(phi);
         } else {
-            r = b;
-            theta = Math.PI / 2 - Math.PI / 4 * (a / b);
+            double phi = Math.PI / 4 * (a / b);
+            out[at] = 0.5 * b * SmallAngle.sin(phi);
+            out[at + 1] = 0.5 * b * SmallAngle.cos(phi);
         }
-        out[at] = 0.5 * r * Math.cos(theta);
-        out[at + 1] = 0.5 * r * Math.sin(theta);
     }
 
     private static double wrap(double x) {
