@@ -30,6 +30,12 @@ final class ProgressiveSampler {
     private final int[] done, goal;
 
     private int passes;
+    /** Per-pixel arrays of the planning, reused from pass to pass (each plan fills them anew). */
+    private final double[] varianceScratch, meanScratch, weightScratch;
+    /** The last predicted image MSE, and the samples taken when it was predicted (-1: none yet). */
+    private double predictedMse;
+
+    private long samplesPredicted = -1;
     /** Samples every pixel reaches first. */
     private final int minimum;
 
@@ -45,6 +51,9 @@ final class ProgressiveSampler {
         sums = new double[6 * n];
         done = new int[n];
         goal = new int[n];
+        varianceScratch = new double[n];
+        meanScratch = new double[n];
+        weightScratch = new double[n];
         // A budget starts small (4 samples) so that a short budget is kept, and not below 4 even where the minimum is
         // lower: it spends its time by the estimates, which one sample per half makes too rough (the accuracy
         // report's soft shadows at the time of 64 fixed samples, two runs four minutes apart: RMSE 4.6 starting from
@@ -92,8 +101,8 @@ final class ProgressiveSampler {
         return new ProgressiveReport(settings, predictedError(), samples(), passes, range[0], range[1], range[2]);
     }
 
-    /** Bytes per pixel of this state. */
-    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4;
+    /** Bytes per pixel of this state: the halves' sums, the counts, and the planning's three arrays. */
+    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4 + 3 * 8;
 
     /** Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass). */
     void advance(int x, int y, TraceContext ctx) {
@@ -141,10 +150,15 @@ final class ProgressiveSampler {
      * keep their estimate of zero.)
      */
     double predictedError() {
-        double[] mean = smoothed(sampleVariances(errors()), false);
-        double sum = 0;
-        for (int p = 0, n = done.length; p < n; p++) sum += mean[p] / (2.0 * done[p]);
-        return Math.sqrt(sum / done.length);
+        long samples = samples();
+        if (samples != samplesPredicted) {
+            double[] mean = smoothed(sampleVariances(), false, meanScratch);
+            predictedMse = 0;
+            for (int p = 0, n = done.length; p < n; p++) predictedMse += mean[p] / (2.0 * done[p]);
+            predictedMse /= done.length;
+            samplesPredicted = samples;
+        }
+        return Math.sqrt(predictedMse);
     }
 
     /** Samples taken so far (both halves of every pixel). */
@@ -166,12 +180,16 @@ final class ProgressiveSampler {
      * {@code target}; returns the samples planned (0 when the target is met or no pixel may take more).
      */
     long planForError(double target) {
-        double[] variance = sampleVariances(errors());
-        double[] mean = smoothed(variance, false), weight = weights(variance);
+        double[] variance = sampleVariances();
+        double[] mean = smoothed(variance, false, meanScratch);
         double mse = 0;
         for (int p = 0; p < variance.length; p++) mse += mean[p] / (2.0 * done[p]);
         mse /= variance.length;
+        // Kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
+        predictedMse = mse;
+        samplesPredicted = samples();
         if (mse <= target * target) return 0;
+        double[] weight = weights(variance);
         // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
         // (every pixel at most GROWTH times its samples), the least lambda that comes within 2% of the best this pass
         // can do: beyond it, only pixels that look flat would take more samples, and they change little.
@@ -209,7 +227,7 @@ final class ProgressiveSampler {
             }
             return planned; // 0 when not even the lowest pixels can be raised in time: the render ends
         }
-        double[] weight = weights(sampleVariances(errors()));
+        double[] weight = weights(sampleVariances());
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
         while (hi - lo > 1e-3 * hi) {
@@ -233,7 +251,7 @@ final class ProgressiveSampler {
      * to its first samples.
      */
     private double[] weights(double[] variance) {
-        double[] weight = smoothed(variance, true);
+        double[] weight = smoothed(variance, true, weightScratch);
         double mean = 0;
         for (int p = 0; p < variance.length; p++) {
             weight[p] = Math.sqrt(weight[p]);
@@ -244,16 +262,10 @@ final class ProgressiveSampler {
         return weight;
     }
 
-    private double[] errors() {
-        double[] e2 = new double[done.length];
-        for (int p = 0; p < e2.length; p++) e2[p] = errorSquared(p);
-        return e2;
-    }
-
-    /** The variance of one sample of each pixel: its error estimate times its samples. */
-    private double[] sampleVariances(double[] e2) {
-        double[] v = new double[e2.length];
-        for (int p = 0; p < v.length; p++) v[p] = e2[p] * 2.0 * done[p];
+    /** The variance of one sample of each pixel, its error estimate times its samples, into a reused array. */
+    private double[] sampleVariances() {
+        double[] v = varianceScratch;
+        for (int p = 0; p < v.length; p++) v[p] = errorSquared(p) * 2.0 * done[p];
         return v;
     }
 
@@ -262,8 +274,7 @@ final class ProgressiveSampler {
      * neighbours see much the same noise, and an edge that one pixel's samples all missed is often seen by a
      * neighbour's. One pass over the image in pixel order, each neighbourhood summed row by row.
      */
-    private double[] smoothed(double[] values, boolean largest) {
-        double[] out = new double[values.length];
+    private double[] smoothed(double[] values, boolean largest, double[] out) {
         for (int y = 0; y < nY; y++) {
             int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
             for (int x = 0; x < nX; x++) {
