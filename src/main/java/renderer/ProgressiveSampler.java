@@ -9,8 +9,9 @@ import java.util.Arrays;
  * <p>A pixel's error estimate is {@code ((A - B) / 2)^2} per channel, A and B the means of its halves clamped to the
  * displayable 0..255: the expected squared error of their mean, exact for independent halves, whatever the sampling
  * pattern. Per pixel it is noisy (one degree of freedom), so the prediction averages each pixel's per-sample variance
- * over its 3 x 3 neighbourhood and the plan weighs pixels by the neighbourhood's largest. The plan assumes the error falls as
- * 1/n (true for independent samples; low-discrepancy samples do at least as well), and the next pass measures again.
+ * over its 3 x 3 neighbourhood and the plan weighs pixels by the neighbourhood's largest. The plan assumes each pixel's
+ * MSE falls as {@code n^-alpha}, alpha fitted to the passes so far ({@link ConvergenceLaw}), and the next pass measures
+ * again.
  *
  * <p>Pixels are planned in image order and each pass's decisions depend only on the pixels' values, so the samples,
  * and the image, are the same for any number of threads (a time budget, which measures time, is the exception).
@@ -18,6 +19,8 @@ import java.util.Arrays;
 final class ProgressiveSampler {
     /** A pass may multiply a pixel's samples by at most this: estimates are checked again before going further. */
     private static final int GROWTH = 8;
+    /** The share of the target's MSE a plan aims at. */
+    private static final double LANDING = 0.97;
     /** Samples per pixel of a time budget's first pass. */
     private static final int FIRST_BUDGET_PASS = 4;
 
@@ -36,6 +39,8 @@ final class ProgressiveSampler {
     private double predictedMse;
 
     private long samplesPredicted = -1;
+    /** How the pixels' errors fall with their samples, fitted pass by pass. */
+    private final ConvergenceLaw law;
     /** Samples every pixel reaches first. */
     private final int minimum;
 
@@ -54,6 +59,7 @@ final class ProgressiveSampler {
         varianceScratch = new double[n];
         meanScratch = new double[n];
         weightScratch = new double[n];
+        law = new ConvergenceLaw(n);
         // A budget starts small (4 samples) so that a short budget is kept, and not below 4 even where the minimum is
         // lower: it spends its time by the estimates, which one sample per half makes too rough (the accuracy
         // report's soft shadows at the time of 64 fixed samples, two runs four minutes apart: RMSE 4.6 starting from
@@ -101,8 +107,8 @@ final class ProgressiveSampler {
         return new ProgressiveReport(settings, predictedError(), samples(), passes, range[0], range[1], range[2]);
     }
 
-    /** Bytes per pixel of this state: the halves' sums, the counts, and the planning's three arrays. */
-    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4 + 3 * 8;
+    /** Bytes per pixel of this state: the halves' sums, the counts, the planning's arrays and the law's record. */
+    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4 + 3 * 8 + 8 + 4;
 
     /** Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass). */
     void advance(int x, int y, TraceContext ctx) {
@@ -176,35 +182,55 @@ final class ProgressiveSampler {
     }
 
     /**
-     * Plans the next pass toward {@code target}: the fewest samples for which the 1/n law predicts an image RMSE of
-     * {@code target}; returns the samples planned (0 when the target is met or no pixel may take more).
+     * Plans the next pass toward {@code target}: the fewest samples for which the convergence law (each pixel's MSE
+     * falling as {@code n^-alpha}, see {@link ConvergenceLaw}) predicts an image RMSE of {@code target}; returns the
+     * samples planned (0 when the target is met or no pixel may take more).
      */
     long planForError(double target) {
         double[] variance = sampleVariances();
-        double[] mean = smoothed(variance, false, meanScratch);
-        double mse = 0;
-        for (int p = 0; p < variance.length; p++) mse += mean[p] / (2.0 * done[p]);
-        mse /= variance.length;
+        // Each pixel's predicted MSE: the neighbourhood's variance of one sample, over the pixel's samples.
+        double[] mse = smoothed(variance, false, meanScratch);
+        double total = 0;
+        for (int p = 0; p < mse.length; p++) {
+            mse[p] /= 2.0 * done[p];
+            total += mse[p];
+        }
+        total /= mse.length;
         // Kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
-        predictedMse = mse;
+        predictedMse = total;
         samplesPredicted = samples();
-        if (mse <= target * target) return 0;
+        law.fit(mse, done);
+        if (total <= target * target) return 0;
         double[] weight = weights(variance);
+        // Per noisy pixel, its MSE times done^alpha: times goal^-alpha, its MSE after the pass.
+        int[] noisy = noisyPixels(mse);
+        double[] powers = law.inversePowers(largestHalfGoal());
+        double[] scale = new double[noisy.length];
+        for (int k = 0; k < noisy.length; k++) scale[k] = mse[noisy[k]] / powers[done[noisy[k]]];
         // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
         // (every pixel at most GROWTH times its samples), the least lambda that comes within 2% of the best this pass
         // can do: beyond it, only pixels that look flat would take more samples, and they change little.
-        int[] noisy = noisyPixels(mean);
-        double reachable = 1.02 * predictedMse(mean, weight, Double.POSITIVE_INFINITY, noisy);
-        double goalMse = Math.max(target * target, reachable);
+        double reachable = 1.02 * predictedMse(scale, noisy, powers, weight, Double.POSITIVE_INFINITY);
+        // A little below the target: a plan that lands on it exactly misses it by a hair half the time, and each
+        // further pass costs a plan for a handful of samples (the POV-Ray scene took up to seven passes that way).
+        double goalMse = Math.max(LANDING * target * target, reachable);
         double lo = 0, hi = 1;
-        while (predictedMse(mean, weight, hi, noisy) > goalMse && hi < 1e30) hi *= 2;
+        while (predictedMse(scale, noisy, powers, weight, hi) > goalMse && hi < 1e30) hi *= 2;
         // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
         while (hi - lo > 1e-3 * hi) {
             double mid = (lo + hi) / 2;
-            if (predictedMse(mean, weight, mid, noisy) > goalMse) lo = mid;
+            if (predictedMse(scale, noisy, powers, weight, mid) > goalMse) lo = mid;
             else hi = mid;
         }
+        law.remember(mse, done);
         return setGoals(weight, hi);
+    }
+
+    /** The most samples per half any pixel may reach in the coming pass. */
+    private int largestHalfGoal() {
+        int most = 0;
+        for (int d : done) most = Math.max(most, d);
+        return (int) Math.min(settings.maxSamples() / 2, (long) GROWTH * most);
     }
 
     /**
@@ -316,13 +342,13 @@ final class ProgressiveSampler {
     }
 
     /**
-     * The image MSE the 1/n law predicts for per-sample variances {@code variance} after planning with lambda, summed
-     * over the pixels {@code noisy} (those of non-zero variance: the others add exactly zero).
+     * The image MSE the convergence law predicts after planning with lambda: the noisy pixels' {@code scale} times
+     * {@code goal^-alpha} ({@code powers}), summed (the other pixels add exactly zero), over all pixels.
      */
-    private double predictedMse(double[] variance, double[] weight, double lambda, int[] noisy) {
+    private double predictedMse(double[] scale, int[] noisy, double[] powers, double[] weight, double lambda) {
         double sum = 0;
-        for (int p : noisy) sum += variance[p] / (2.0 * halfGoal(weight, lambda, p));
-        return sum / variance.length;
+        for (int k = 0; k < noisy.length; k++) sum += scale[k] * powers[halfGoal(weight, lambda, noisy[k])];
+        return sum / done.length;
     }
 
     /**
