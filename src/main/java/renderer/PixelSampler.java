@@ -112,23 +112,7 @@ final class PixelSampler {
      * the same pixel, so that a pinhole camera's first hit can be reused.
      */
     void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
-        int pixel = y * nX + x;
-        if (ctx.progressivePixel != pixel) {
-            // Per pixel, not per sample: its seed and each half's seed and shift.
-            long pixelSeed = SampleStream.mix(seed, pixel);
-            ctx.progressivePixel = pixel;
-            ctx.progressivePixelSeed = pixelSeed;
-            for (int h = 0; h < 2; h++) {
-                long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + h);
-                SampleStream shift = ctx.random.reset(halfSeed);
-                ctx.halfSeeds[h] = halfSeed;
-                ctx.halfShifts[2 * h] = shift.nextDouble();
-                ctx.halfShifts[2 * h + 1] = shift.nextDouble();
-            }
-        }
-        long path = SampleStream.mix(ctx.progressivePixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
-        ctx.sequenceIndex = index;
-        ctx.sequenceSeed = ctx.halfSeeds[half];
+        long path = beginProgressive(x, y, half, index, ctx);
         double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
         if (antiAliasing.getSampleCount() == 1) {
             // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
@@ -145,6 +129,45 @@ final class PixelSampler {
             sample(u + (ox - 0.5) * pixelWidth, v - (oy - 0.5) * pixelHeight, path, ctx);
         }
         ctx.sequenceIndex = -1;
+    }
+
+    /**
+     * Samples {@code first} to {@code first + count - 1} of half {@code half} of pixel (x, y) at once, the previous
+     * sample this context took having been of the same pixel: the sum of their colours into {@code ctx.red, green,
+     * blue}, where the tracer can shade the reused first hit once with all their shadow rays
+     * ({@link RayTracerBase#traceAgainBatch}: centre samples of a pinhole camera). Returns false, having sampled
+     * nothing, where it cannot.
+     */
+    boolean progressiveBatch(int x, int y, int half, int first, int count, TraceContext ctx) {
+        if (count < 2 || antiAliasing.getSampleCount() != 1 || lens) return false;
+        long path = beginProgressive(x, y, half, first, ctx);
+        boolean shaded = rayTracer.traceAgainBatch(ctx.cameraRay, ctx, path, count);
+        ctx.sequenceIndex = -1;
+        if (shaded) ctx.setColor(ctx.red * count, ctx.green * count, ctx.blue * count);
+        return shaded;
+    }
+
+    /**
+     * Points the context at sample {@code index} of half {@code half} of pixel (x, y): the pixel's and halves' seeds
+     * (per pixel, not per sample) and the half's sequence; returns the sample's path seed.
+     */
+    private long beginProgressive(int x, int y, int half, int index, TraceContext ctx) {
+        int pixel = y * nX + x;
+        if (ctx.progressivePixel != pixel) {
+            long pixelSeed = SampleStream.mix(seed, pixel);
+            ctx.progressivePixel = pixel;
+            ctx.progressivePixelSeed = pixelSeed;
+            for (int h = 0; h < 2; h++) {
+                long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + h);
+                SampleStream shift = ctx.random.reset(halfSeed);
+                ctx.halfSeeds[h] = halfSeed;
+                ctx.halfShifts[2 * h] = shift.nextDouble();
+                ctx.halfShifts[2 * h + 1] = shift.nextDouble();
+            }
+        }
+        ctx.sequenceIndex = index;
+        ctx.sequenceSeed = ctx.halfSeeds[half];
+        return SampleStream.mix(ctx.progressivePixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
     }
 
     /**

@@ -113,16 +113,32 @@ final class ProgressiveSampler {
     /** Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass). */
     void advance(int x, int y, TraceContext ctx) {
         int p = y * nX + x;
-        int o = 6 * p;
-        for (int i = done[p], end = goal[p]; i < end; i++) {
-            for (int half = 0; half < 2; half++) {
-                pixels.progressiveSample(x, y, half, i, i > done[p] || half > 0, ctx);
-                sums[o + 3 * half] += ctx.red;
-                sums[o + 3 * half + 1] += ctx.green;
-                sums[o + 3 * half + 2] += ctx.blue;
+        int from = done[p], to = goal[p];
+        for (int half = 0; half < 2; half++) {
+            int i = from;
+            // The pixel's first sample of the pass traces its camera ray; the others shade the same first hit again,
+            // where they can all at once (centre samples of a pinhole camera: the shadow rays of every sample).
+            if (half == 0 && i < to) add(p, half, x, y, i++, false, ctx);
+            if (pixels.progressiveBatch(x, y, half, i, to - i, ctx)) {
+                addColour(p, half, ctx);
+                continue;
             }
+            for (; i < to; i++) add(p, half, x, y, i, true, ctx);
         }
         done[p] = Math.max(done[p], goal[p]);
+    }
+
+    /** Takes sample {@code index} of half {@code half} of pixel p = (x, y) and adds it to the half's sums. */
+    private void add(int p, int half, int x, int y, int index, boolean again, TraceContext ctx) {
+        pixels.progressiveSample(x, y, half, index, again, ctx);
+        addColour(p, half, ctx);
+    }
+
+    private void addColour(int p, int half, TraceContext ctx) {
+        int o = 6 * p + 3 * half;
+        sums[o] += ctx.red;
+        sums[o + 1] += ctx.green;
+        sums[o + 2] += ctx.blue;
     }
 
     /** The pixel's colour: the mean of all its samples, into {@code out} (red, green, blue). */

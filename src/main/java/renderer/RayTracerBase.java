@@ -73,6 +73,22 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * As {@link #traceAgain} for {@code samples} consecutive samples of a progressive render's pixel half at once
+     * (from the context's current sequence index): where a sample's colour depends linearly on its shadow rays, one
+     * shading with every sample's shadow rays gives their mean colour, which is left in the context. Returns false,
+     * having done nothing, where it cannot (the caller then samples one by one). By default it cannot.
+     *
+     * @param ray the same ray as the context's previous {@link #trace}
+     * @param context the calling thread's scratch state
+     * @param pathSeed the seed of the first sample's path
+     * @param samples how many samples, at least 2
+     * @return whether the samples were shaded
+     */
+    public boolean traceAgainBatch(Ray ray, TraceContext context, long pathSeed, int samples) {
+        return false;
+    }
+
+    /**
      * The colour seen along {@code ray}: {@link #trace} returning a {@link Color}.
      *
      * @param ray the ray to trace

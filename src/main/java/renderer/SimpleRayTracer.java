@@ -118,6 +118,39 @@ public class SimpleRayTracer extends RayTracerBase {
     }
 
     /**
+     * A batch where the first hit's shading fires only shadow rays, and no adaptive probes (which decide per sample):
+     * its colour is then linear in the shadow beams' mean transmittance, and the samples' beams, taken together, give
+     * the mean of their colours. Each soft light's beam takes all the samples' points at once; a hard light's single
+     * ray is the same for every sample, and is fired once.
+     */
+    @Override
+    public boolean traceAgainBatch(Ray ray, TraceContext context, long pathSeed, int samples) {
+        if (settings.adaptiveShadows()) return false;
+        int level = settings.maxLevel();
+        if (!context.firstRayMissed && level > 1) {
+            Material m = context.surface(level).geometry.getMaterial();
+            if (reflects(m) || refracts(m)) return false;
+        }
+        context.sequenceBatch = samples;
+        try {
+            traceAgain(ray, context, pathSeed);
+        } finally {
+            context.sequenceBatch = 1;
+        }
+        return true;
+    }
+
+    /** Whether shading a surface of material {@code m} fires reflection rays (when its level allows). */
+    private boolean reflects(Material m) {
+        return plan.reflection && (!m.getKr().isZero() || !plan.planning);
+    }
+
+    /** Whether shading a surface of material {@code m} fires refraction rays (when its level allows). */
+    private boolean refracts(Material m) {
+        return plan.refraction && (!m.getKt().isZero() || !plan.planning);
+    }
+
+    /**
      * The colour along {@code ray} into {@code ctx.red, green, blue}. {@code kr, kg, kb} is the attenuation the
      * path has accumulated (the weight of this colour in the pixel).
      *
@@ -172,7 +205,7 @@ public class SimpleRayTracer extends RayTracerBase {
         b += ctx.blue;
         if (level > 1) {
             Double3 kR = m.getKr(), kT = m.getKt();
-            if (plan.reflection && (!kR.isZero() || !plan.planning)) {
+            if (reflects(m)) {
                 double kkr = kr * kR.d1, kkg = kg * kR.d2, kkb = kb * kR.d3;
                 boolean weightless = kR.isZero(); // fired only with planning off, to show planning changes nothing
                 if (weightless || !lowerThan(kkr, kkg, kkb, minAttenuation)) {
@@ -198,7 +231,7 @@ public class SimpleRayTracer extends RayTracerBase {
                     }
                 }
             }
-            if (plan.refraction && (!kT.isZero() || !plan.planning)) {
+            if (refracts(m)) {
                 double kkr = kr * kT.d1, kkg = kg * kT.d2, kkb = kb * kT.d3;
                 boolean weightless = kT.isZero();
                 if (weightless || !lowerThan(kkr, kkg, kkb, minAttenuation)) {
@@ -370,7 +403,9 @@ public class SimpleRayTracer extends RayTracerBase {
         double diameter = 2 * light.getRadius();
         sp.basis(ls.lx, ls.ly, ls.lz);
         long seed = SampleStream.mix(SampleStream.mix(path, SHADOW), li);
-        double[] offsets = ctx.shadowOffsets(count);
+        // In a batch of progressive samples (traceAgainBatch), the beam of each sample at once.
+        int rays = count * ctx.sequenceBatch;
+        double[] offsets = ctx.shadowOffsets(rays);
         if (settings.adaptiveShadows()) {
             // Probe the centre and a ring on the rim first: an occluder edge that crosses the disk almost surely
             // separates two of them, so agreement means the point is fully lit, in the umbra, or behind the same
@@ -386,11 +421,12 @@ public class SimpleRayTracer extends RayTracerBase {
                 seed = SampleStream.mix(seed, 1);
             }
         }
-        if (!ctx.continueSequence(SHADOW, li, count, TargetShape.CIRCLE, offsets)) {
+        if (!ctx.continueSequenceBatch(SHADOW, li, count, TargetShape.CIRCLE, offsets)) {
+            // Outside a progressive render, where a batch is always one sample.
             SuperSamplingBlackboard.getSampleOffsets(
                     count, TargetShape.CIRCLE, settings.shadowPattern(), ctx.random.reset(seed), offsets);
         }
-        diskVisibility(sp, position, diameter, count, offsets, li, occluders, ctx);
+        diskVisibility(sp, position, diameter, rays, offsets, li, occluders, ctx);
     }
 
     /**

@@ -50,6 +50,11 @@ public final class TraceContext {
     int sequenceIndex = -1;
 
     long sequenceSeed;
+    /**
+     * How many consecutive samples of the sequence the current shading stands for (see
+     * {@link RayTracerBase#traceAgainBatch}): its shadow beams take that many samples' points at once. 1 otherwise.
+     */
+    int sequenceBatch = 1;
 
     /** The pixel whose progressive seeds follow (-1: none yet): its seed, and each half's seed and shift (x, y). */
     int progressivePixel = -1;
@@ -67,7 +72,17 @@ public final class TraceContext {
      * comparison.
      */
     boolean continueSequence(long stream, long part, int count, renderer.sampling.TargetShape shape, double[] out) {
-        return sequenceIndex >= 0 && continueSequence(SampleStream.mix(stream, part), count, shape, out);
+        return sequenceIndex >= 0 && continueSequence(SampleStream.mix(stream, part), count, 1, shape, out);
+    }
+
+    /**
+     * As {@link #continueSequence(long, long, int, renderer.sampling.TargetShape, double[])} for the current
+     * {@link #sequenceBatch} of samples: {@code count} points for each, {@code count * sequenceBatch} in all, the same
+     * points those samples would take one by one.
+     */
+    boolean continueSequenceBatch(
+            long stream, long part, int count, renderer.sampling.TargetShape shape, double[] out) {
+        return sequenceIndex >= 0 && continueSequence(SampleStream.mix(stream, part), count, sequenceBatch, shape, out);
     }
 
     /**
@@ -75,11 +90,15 @@ public final class TraceContext {
      * Halton continuation), or returns false outside a progressive render.
      */
     boolean continueSequence(long stream, int count, renderer.sampling.TargetShape shape, double[] out) {
-        if (sequenceIndex < 0) return false;
+        return sequenceIndex >= 0 && continueSequence(stream, count, 1, shape, out);
+    }
+
+    private boolean continueSequence(
+            long stream, int count, int samples, renderer.sampling.TargetShape shape, double[] out) {
         SampleStream shift = random.reset(SampleStream.mix(sequenceSeed, stream));
         double rx = shift.nextDouble(), ry = shift.nextDouble();
         renderer.sampling.SuperSamplingBlackboard.haltonContinued(
-                count, (long) sequenceIndex * count, shape, rx, ry, out);
+                count * samples, (long) sequenceIndex * count, shape, rx, ry, out);
         return true;
     }
 
