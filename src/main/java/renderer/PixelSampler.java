@@ -132,6 +132,19 @@ final class PixelSampler {
     }
 
     /**
+     * For a pass of progressive samples through the centre of pixel (x, y) with a pinhole camera: fires its camera ray
+     * and keeps the first hit, unshaded, so that every sample of the pass shades it again ({@code again}); returns
+     * false, having done nothing, for samples over the pixel's area, through a lens, or a tracer that cannot.
+     */
+    boolean locateCentre(int x, int y, TraceContext ctx) {
+        if (antiAliasing.getSampleCount() != 1 || lens) return false;
+        double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
+        if (!rayTracer.locate(camera.rayThrough(u, v, ctx.cameraRay), ctx)) return false;
+        ctx.counters.camera++;
+        return true;
+    }
+
+    /**
      * Samples {@code first} to {@code first + count - 1} of half {@code half} of pixel (x, y) at once, the previous
      * sample this context took having been of the same pixel: the sum of their colours into {@code ctx.red, green,
      * blue}, where the tracer can shade the reused first hit once with all their shadow rays

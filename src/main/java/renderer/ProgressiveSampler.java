@@ -114,11 +114,14 @@ final class ProgressiveSampler {
     void advance(int x, int y, TraceContext ctx) {
         int p = y * nX + x;
         int from = done[p], to = goal[p];
+        if (to <= from) return;
+        // Centre samples of a pinhole camera: one camera ray per pixel and pass, its first hit shaded again by every
+        // sample, and where they can by all of a half's samples at once (the shadow rays of every sample).
+        boolean located = pixels.locateCentre(x, y, ctx);
         for (int half = 0; half < 2; half++) {
             int i = from;
-            // The pixel's first sample of the pass traces its camera ray; the others shade the same first hit again,
-            // where they can all at once (centre samples of a pinhole camera: the shadow rays of every sample).
-            if (half == 0 && i < to) add(p, half, x, y, i++, false, ctx);
+            // Otherwise the pixel's first sample of the pass traces its camera ray, and the others follow it.
+            if (half == 0 && !located) add(p, half, x, y, i++, false, ctx);
             if (pixels.progressiveBatch(x, y, half, i, to - i, ctx)) {
                 addColour(p, half, ctx);
                 continue;

@@ -89,6 +89,19 @@ public abstract class RayTracerBase {
     }
 
     /**
+     * Finds the first hit along {@code ray} without shading it, for the {@link #traceAgain} and
+     * {@link #traceAgainBatch} calls that follow (a progressive pass's samples of one pixel centre). Returns false,
+     * having done nothing, where the tracer cannot; by default it cannot.
+     *
+     * @param ray the camera ray
+     * @param context the calling thread's scratch state
+     * @return whether the first hit was found (or found missing) and kept
+     */
+    public boolean locate(Ray ray, TraceContext context) {
+        return false;
+    }
+
+    /**
      * The colour seen along {@code ray}: {@link #trace} returning a {@link Color}.
      *
      * @param ray the ray to trace

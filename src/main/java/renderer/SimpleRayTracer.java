@@ -159,6 +159,19 @@ public class SimpleRayTracer extends RayTracerBase {
      */
     private void trace(
             Ray ray, TraceContext ctx, long path, int level, double kr, double kg, double kb, boolean maySplit) {
+        SurfacePoint sp = hit(ray, ctx, level);
+        if (sp == null) {
+            ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
+            return;
+        }
+        shade(sp, ray.dx(), ray.dy(), ray.dz(), ctx, path, level, kr, kg, kb, maySplit);
+    }
+
+    /**
+     * The first hit along {@code ray}, in level {@code level}'s surface point, or null where the ray meets nothing.
+     * At the first level it is kept for {@link #traceAgain}.
+     */
+    private SurfacePoint hit(Ray ray, TraceContext ctx, int level) {
         HitRecord hit = ctx.hit.reset();
         // Only textured meshes set texture coordinates: zeroed here, a texture elsewhere reads a fixed texel
         // rather than the previous ray's (which would make images depend on the ray order).
@@ -166,13 +179,16 @@ public class SimpleRayTracer extends RayTracerBase {
         hit.texV = 0;
         boolean found = accelerator.intersect(ray, 0, Double.POSITIVE_INFINITY, hit);
         if (level == settings.maxLevel()) ctx.firstRayMissed = !found; // for traceAgain
-        if (!found) {
-            ctx.setColor(scene.background.getR(), scene.background.getG(), scene.background.getB());
-            return;
-        }
+        if (!found) return null;
         hit.complete(ray);
-        SurfacePoint sp = ctx.surface(level).set(hit);
-        shade(sp, ray.dx(), ray.dy(), ray.dz(), ctx, path, level, kr, kg, kb, maySplit);
+        return ctx.surface(level).set(hit);
+    }
+
+    /** Finds the first hit along {@code ray}, unshaded, for the {@link #traceAgain} and batches that follow. */
+    @Override
+    public boolean locate(Ray ray, TraceContext context) {
+        hit(ray, context, settings.maxLevel());
+        return true;
     }
 
     private void shade(
