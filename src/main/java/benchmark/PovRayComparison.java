@@ -25,7 +25,7 @@ import sceneio.SceneLoader;
  * The soft-shadow comparison with POV-Ray 3.7 of docs/ACCURACY.md: {@code scenes/povray/soft-shadow.pov} and
  * {@code .json}, 256 x 256, one camera ray per pixel, one thread. POV-Ray renders its adaptive, jittered circular
  * area light at 3x3 to 17x17 lights (its own "Trace Time" and shadow-ray count) and a converged 33x33 reference; this
- * library renders to RMSEs 4, 2 and 1 with progressive sampling (the target asked lowered in 5% steps until the 8-bit
+ * library renders to RMSEs 4, 2 and 1 with progressive sampling (the target asked lowered in 2% steps until the 8-bit
  * image's measured error reaches the one wanted), timed as its command line prints it (a new
  * JVM per render) and in a warm JVM (median of 5), and a converged reference (4,096 shadow rays per pixel). Each
  * renderer is measured against its own reference, on the 8-bit images. Needs {@code povray} on the PATH;
@@ -92,15 +92,15 @@ public final class PovRayComparison {
 
     /**
      * The target to ask for an 8-bit image within {@code wanted} of the reference: the error is measured on 8-bit
-     * images, whose rounding adds to it where a pixel's noise is small, so the target is lowered by 5% at a time
-     * (at most eight times) until the measured error reaches the one wanted.
+     * images, whose rounding adds to it where a pixel's noise is small, so the target is lowered by 2% at a time
+     * (at most twenty times) until the measured error reaches the one wanted.
      */
     private static double targetAskedFor(double wanted, BufferedImage reference) throws Exception {
         double asked = wanted;
-        for (int step = 0; step < 8; step++) {
+        for (int step = 0; step < 20; step++) {
             BufferedImage image = progressive(asked).renderImage().getImage().toBufferedImage();
             if (rmse(image, reference) <= wanted) break;
-            asked *= 0.95;
+            asked *= 0.98;
         }
         return asked;
     }
