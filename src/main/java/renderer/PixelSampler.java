@@ -12,7 +12,9 @@ import renderer.sampling.TargetShape;
 /**
  * A camera's pixel sampling for one render: one ray through the pixel's centre or a beam over the pixel's area
  * (anti-aliasing, fixed or adaptive by corner subdivision), and with an aperture a beam over the lens for every
- * sample (depth of field). Every random number derives from the scene seed and the pixel's index, so a pixel's
+ * sample (depth of field); and for a {@link ProgressiveSampler}, the samples of a pixel's two halves, one by one or,
+ * through the centre of a pinhole camera, a half's samples of a pass at once. Every random number derives from the
+ * scene seed and the pixel's index, so a pixel's
  * colour does not depend on the thread or the order that renders it. The {@link Camera} keeps the view's geometry,
  * the tiles and the threads.
  */
