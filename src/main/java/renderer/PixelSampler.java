@@ -14,9 +14,8 @@ import renderer.sampling.TargetShape;
  * (anti-aliasing, fixed or adaptive by corner subdivision), and with an aperture a beam over the lens for every
  * sample (depth of field); and for a {@link ProgressiveSampler}, the samples of a pixel's two halves, one by one or,
  * through the centre of a pinhole camera, a half's samples of a pass at once. Every random number derives from the
- * scene seed and the pixel's index, so a pixel's
- * colour does not depend on the thread or the order that renders it. The {@link Camera} keeps the view's geometry,
- * the tiles and the threads.
+ * scene seed and the pixel's index, so a pixel's colour does not depend on the thread or the order that renders it.
+ * The {@link Camera} keeps the view's geometry, the tiles and the threads.
  */
 final class PixelSampler {
     private static final long AA_STREAM = 11, LENS_STREAM = 12, ADAPTIVE_PATHS = 1L << 40;
