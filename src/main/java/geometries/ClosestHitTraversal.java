@@ -23,11 +23,7 @@ final class ClosestHitTraversal {
     private final Intersectable[] unbounded;
     /** The BVH, or null for brute-force search. */
     private final BVH bvh;
-    /**
-     * Whether queries search the tree: not over a single bounded primitive, where the root's slabs would be set up
-     * only to reach the one test that brute force makes directly (8-10% of a warm render of the POV-Ray comparison
-     * scene, a plane and a sphere).
-     */
+    /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
 
     ClosestHitTraversal(CompiledPrimitives primitives, BVH bvh) {
@@ -39,7 +35,7 @@ final class ClosestHitTraversal {
         objects = primitives.objects;
         unbounded = primitives.unbounded;
         this.bvh = bvh;
-        searchesTree = bvh != null && boundedCount > 1;
+        searchesTree = primitives.searchesTree;
     }
 
     /** See {@link Accelerator#intersect}. */

@@ -30,11 +30,7 @@ final class ShadowQueries {
     private final boolean[] unboundedMayTransmit, unboundedClear;
     /** The BVH, or null for brute-force search. */
     private final BVH bvh;
-    /**
-     * Whether queries search the tree: not over a single bounded primitive, where the root's slabs would be set up
-     * only to reach the one test that brute force makes directly (8-10% of a warm render of the POV-Ray comparison
-     * scene, a plane and a sphere).
-     */
+    /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
 
     ShadowQueries(CompiledPrimitives primitives, BVH bvh) {
@@ -50,7 +46,7 @@ final class ShadowQueries {
         unboundedMayTransmit = primitives.unboundedMayTransmit;
         unboundedClear = primitives.unboundedClear;
         this.bvh = bvh;
-        searchesTree = bvh != null && boundedCount > 1;
+        searchesTree = primitives.searchesTree;
     }
 
     /** See {@link Accelerator#occludes}. */

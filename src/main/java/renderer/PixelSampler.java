@@ -66,8 +66,7 @@ final class PixelSampler {
     /** Renders pixel (x, y) into {@code ctx.red, green, blue}. */
     void render(int x, int y, TraceContext ctx) {
         long pixelSeed = SampleStream.mix(seed, (long) y * nX + x);
-        double u = (x - (nX - 1) / 2.0) * pixelWidth;
-        double v = -(y - (nY - 1) / 2.0) * pixelHeight;
+        double u = centreU(x), v = centreV(y);
         int count = antiAliasing.getSampleCount();
         if (count == 1) {
             sample(u, v, pixelSeed, ctx);
@@ -99,6 +98,16 @@ final class PixelSampler {
         average.meanInto(ctx);
     }
 
+    /** The view-plane coordinate of the centre of pixel column {@code x}, rightward from the view's centre. */
+    private double centreU(int x) {
+        return (x - (nX - 1) / 2.0) * pixelWidth;
+    }
+
+    /** The view-plane coordinate of the centre of pixel row {@code y}, upward from the view's centre. */
+    private double centreV(int y) {
+        return -(y - (nY - 1) / 2.0) * pixelHeight;
+    }
+
     /** Whether progressive samples spread over the pixel's area (anti-aliasing asked) or all go through its centre. */
     boolean samplesArea() {
         return antiAliasing.getSampleCount() > 1;
@@ -114,7 +123,7 @@ final class PixelSampler {
      */
     void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
         long path = beginProgressive(x, y, half, index, ctx);
-        double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
+        double u = centreU(x), v = centreV(y);
         if (antiAliasing.getSampleCount() == 1) {
             // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
             // after the first, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
@@ -139,7 +148,7 @@ final class PixelSampler {
      */
     boolean locateCentre(int x, int y, TraceContext ctx) {
         if (antiAliasing.getSampleCount() != 1 || lens) return false;
-        double u = (x - (nX - 1) / 2.0) * pixelWidth, v = -(y - (nY - 1) / 2.0) * pixelHeight;
+        double u = centreU(x), v = centreV(y);
         if (!rayTracer.locate(camera.rayThrough(u, v, ctx.cameraRay), ctx)) return false;
         ctx.counters.camera++;
         return true;

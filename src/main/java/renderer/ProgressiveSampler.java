@@ -175,15 +175,24 @@ final class ProgressiveSampler {
      * keep their estimate of zero.)
      */
     double predictedError() {
-        long samples = samples();
-        if (samples != samplesPredicted) {
-            double[] mean = smoothed(sampleVariances(), false, meanScratch);
-            predictedMse = 0;
-            for (int p = 0, n = done.length; p < n; p++) predictedMse += mean[p] / (2.0 * done[p]);
-            predictedMse /= done.length;
-            samplesPredicted = samples;
-        }
+        if (samples() != samplesPredicted) pixelMse(sampleVariances());
         return Math.sqrt(predictedMse);
+    }
+
+    /**
+     * Each pixel's predicted MSE, the neighbourhood's variance of one sample over the pixel's samples (in a reused
+     * array), and their mean, the image's, into {@link #predictedMse} for the samples taken so far.
+     */
+    private double[] pixelMse(double[] variance) {
+        double[] mse = smoothed(variance, false, meanScratch);
+        double total = 0;
+        for (int p = 0; p < mse.length; p++) {
+            mse[p] /= 2.0 * done[p];
+            total += mse[p];
+        }
+        predictedMse = total / mse.length;
+        samplesPredicted = samples();
+        return mse;
     }
 
     /** Samples taken so far (both halves of every pixel). */
@@ -207,19 +216,10 @@ final class ProgressiveSampler {
      */
     long planForError(double target) {
         double[] variance = sampleVariances();
-        // Each pixel's predicted MSE: the neighbourhood's variance of one sample, over the pixel's samples.
-        double[] mse = smoothed(variance, false, meanScratch);
-        double total = 0;
-        for (int p = 0; p < mse.length; p++) {
-            mse[p] /= 2.0 * done[p];
-            total += mse[p];
-        }
-        total /= mse.length;
-        // Kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
-        predictedMse = total;
-        samplesPredicted = samples();
+        // Also kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
+        double[] mse = pixelMse(variance);
         law.fit(mse, done);
-        if (total <= target * target) return 0;
+        if (predictedMse <= target * target) return 0;
         double[] weight = weights(variance);
         // Per noisy pixel, its MSE times done^alpha: times goal^-alpha, its MSE after the pass.
         int[] noisy = noisyPixels(mse);
