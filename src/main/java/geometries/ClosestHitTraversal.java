@@ -10,6 +10,9 @@ import primitives.Ray;
  */
 final class ClosestHitTraversal {
     private static final int OBJECT = CompiledPrimitives.OBJECT;
+    private static final int INFO = CompiledPrimitives.INFO;
+    private static final int INDEX = CompiledPrimitives.INDEX;
+    private static final int EDGES = CompiledPrimitives.EDGES;
 
     // The arrays of CompiledPrimitives this search reads, copied into final fields of the class that runs the
     // loops: a loop reaches each in one load from this (loading them into locals measured about 2% slower on the
@@ -17,8 +20,7 @@ final class ClosestHitTraversal {
     private final int boundedCount;
     private final double[] triangles;
     private final int[] info;
-    private final Geometry[] owners;
-    private final int[] parts;
+    private final Geometry[] geometries;
     private final Intersectable[] objects;
     private final Intersectable[] unbounded;
     /** The BVH, or null for brute-force search. */
@@ -30,8 +32,7 @@ final class ClosestHitTraversal {
         boundedCount = primitives.boundedCount;
         triangles = primitives.triangles;
         info = primitives.info;
-        owners = primitives.owners;
-        parts = primitives.parts;
+        geometries = primitives.geometries;
         objects = primitives.objects;
         unbounded = primitives.unbounded;
         this.bvh = bvh;
@@ -60,12 +61,12 @@ final class ClosestHitTraversal {
         if (!searchesTree) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
-                if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
+                if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
                     tMax = hit.t;
                     tieLimit = Math.nextUp(tMax);
-                    best = info[2 * k];
-                    bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
-                    bestObject = info[2 * k + 1] == OBJECT ? k : -1;
+                    best = info[INFO * k + INDEX];
+                    bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
+                    bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
                 }
             }
         } else if (boundedCount > 0) {
@@ -87,13 +88,13 @@ final class ClosestHitTraversal {
                 if (count > 0) {
                     for (int k = link, end = link + count; k < end; k++) {
                         tests++;
-                        if (testPrimitive(k, ray, tMin, info[2 * k] < best ? tieLimit : tMax, hit)) {
+                        if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
                             tMax = hit.t;
                             tMaxF = RaySlabs.above(tMax);
                             tieLimit = Math.nextUp(tMax);
-                            best = info[2 * k];
-                            bestTriangle = info[2 * k + 1] == OBJECT ? -1 : k;
-                            bestObject = info[2 * k + 1] == OBJECT ? k : -1;
+                            best = info[INFO * k + INDEX];
+                            bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
+                            bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
                         }
                     }
                 } else {
@@ -150,8 +151,8 @@ final class ClosestHitTraversal {
         hit.primitiveTests += tests;
         if (best == Integer.MAX_VALUE) return false;
         if (bestTriangle >= 0) {
-            hit.geometry = owners[bestTriangle];
-            hit.part = parts[bestTriangle];
+            hit.geometry = geometries[info[INFO * bestTriangle + CompiledPrimitives.OWNER]];
+            hit.part = info[INFO * bestTriangle + CompiledPrimitives.PART];
         }
         // Only an instance marks the record: a triangle, another shape or unbounded geometry that ended closer than
         // an instance hit earlier in the search clears the mark.
@@ -165,7 +166,7 @@ final class ClosestHitTraversal {
      * them for the final hit only: fewer arrays touched per test); other shapes fill them.
      */
     private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
-        int edges = info[2 * k + 1];
+        int edges = info[INFO * k + EDGES];
         if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
         int o = 9 * k;
         return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);

@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.IntStream;
@@ -20,13 +21,18 @@ final class PrimitiveCollector {
     double[] triangles = new double[9 * 64];
     int[] shared = new int[64];
     int[] parts = new int[64];
+    /** Each triangle's owner, as its slot in {@link #ownerTable}. */
+    int[] owners = new int[64];
     // Plain arrays grown by doubling, like the ones above: a million-triangle mesh passes through here.
-    Geometry[] owners = new Geometry[64];
     Intersectable[] objects = new Intersectable[64];
     boolean[] mayTransmit = new boolean[64];
     boolean[] clear = new boolean[64];
     BoundingBox[] objectBoxes = new BoundingBox[64];
     final List<Intersectable> unbounded = new ArrayList<>();
+    /** The geometries that own triangles, each once, in the order first met. */
+    final List<Geometry> ownerTable = new ArrayList<>();
+
+    private final Map<Geometry, Integer> ownerSlots = new IdentityHashMap<>();
     /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
     final Map<EdgeKey, List<int[]>> outlineEdges = new HashMap<>();
 
@@ -86,10 +92,21 @@ final class PrimitiveCollector {
         System.arraycopy(v, c, triangles, o + 6, 3);
         shared[count] = sharedFlags;
         parts[count] = part;
-        owners[count] = owner;
+        owners[count] = ownerSlot(owner);
         mayTransmit[count] = transmit;
         clear[count] = CompiledPrimitives.isClear(owner);
         return count++;
+    }
+
+    /** The slot of {@code owner} in {@link #ownerTable}, added there the first time (a mesh's triangles look it up
+     * one after the other, so the last slot is tried first). */
+    private int ownerSlot(Geometry owner) {
+        int last = ownerTable.size() - 1;
+        if (last >= 0 && ownerTable.get(last) == owner) return last;
+        return ownerSlots.computeIfAbsent(owner, o -> {
+            ownerTable.add(o);
+            return ownerTable.size() - 1;
+        });
     }
 
     private void addObject(Intersectable g) {
