@@ -8,9 +8,12 @@ package primitives;
  * coordinates, the reciprocal direction for the slab test, and the axis permutation and shear of the watertight
  * triangle test (Woop, Benthin and Wald 2013).
  *
- * <p>A ray built with the constructor never changes. The renderer traces millions of rays per second through one
- * {@link ReusableRay} per thread instead, which {@link ReusableRay#set} points somewhere new for every ray: an
- * {@link geometries.Intersectable} must not keep a reference to the ray it is given beyond the call.
+ * <p>A ray built with the constructor never changes, and computes its constants at once. The renderer traces
+ * millions of rays per second through one {@link ReusableRay} per thread instead, which {@link ReusableRay#set}
+ * points somewhere new for every ray: an {@link geometries.Intersectable} must not keep a reference to the ray it is
+ * given beyond the call. A reusable ray computes the slab and shear constants when they are first read: a ray that
+ * meets only spheres and planes never needs them (their three divisions were a tenth of a render of a sphere over a
+ * plane), and a reusable ray stays with the one thread that sets it.
  */
 public class Ray {
     /** Created on demand for reusable rays (the kernels read the raw coordinates below). */
@@ -22,6 +25,8 @@ public class Ray {
     private double invDx, invDy, invDz;
     private int kx, ky, kz;
     private double shearX, shearY, shearZ;
+    /** Whether the reciprocals, axes and shear above are those of the current direction. */
+    private boolean derived;
 
     /**
      * A ray from {@code head} along {@code direction}, which is normalized here. A NaN or infinite origin or a
@@ -34,6 +39,7 @@ public class Ray {
         Util.requireNonNull(head, "ray origin");
         Util.requireNonNull(direction, "ray direction");
         init(head.x, head.y, head.z, direction.x, direction.y, direction.z);
+        derive();
         this.head = head;
     }
 
@@ -43,8 +49,9 @@ public class Ray {
     }
 
     /**
-     * Sets every field from an origin and a direction that need not be unit: normalized exactly as
+     * Sets the origin and the direction from an origin and a direction that need not be unit: normalized exactly as
      * {@link Vector#normalize()} does, so a reusable ray and a constructed one along the same vector agree bit for bit.
+     * The constants derived from the direction follow on first use.
      */
     final void init(double ox, double oy, double oz, double vx, double vy, double vz) {
         head = null;
@@ -66,6 +73,12 @@ public class Ray {
         this.dx = dx;
         this.dy = dy;
         this.dz = dz;
+        derived = false;
+    }
+
+    /** Computes the reciprocal direction, the watertight test's axes and its shear from the direction. */
+    private void derive() {
+        derived = true;
         invDx = 1.0 / dx;
         invDy = 1.0 / dy;
         invDz = 1.0 / dz;
@@ -96,6 +109,7 @@ public class Ray {
         dx = other.dx;
         dy = other.dy;
         dz = other.dz;
+        derived = other.derived;
         invDx = other.invDx;
         invDy = other.invDy;
         invDz = other.invDz;
@@ -201,6 +215,7 @@ public class Ray {
      * @return the inverse of the direction's x component
      */
     public final double invDx() {
+        if (!derived) derive();
         return invDx;
     }
 
@@ -210,6 +225,7 @@ public class Ray {
      * @return the inverse of the direction's y component
      */
     public final double invDy() {
+        if (!derived) derive();
         return invDy;
     }
 
@@ -219,6 +235,7 @@ public class Ray {
      * @return the inverse of the direction's z component
      */
     public final double invDz() {
+        if (!derived) derive();
         return invDz;
     }
 
@@ -228,6 +245,7 @@ public class Ray {
      * @return the axis (0, 1 or 2) mapped to x
      */
     public final int kx() {
+        if (!derived) derive();
         return kx;
     }
 
@@ -237,6 +255,7 @@ public class Ray {
      * @return the axis (0, 1 or 2) mapped to y
      */
     public final int ky() {
+        if (!derived) derive();
         return ky;
     }
 
@@ -246,6 +265,7 @@ public class Ray {
      * @return the axis (0, 1 or 2) mapped to z
      */
     public final int kz() {
+        if (!derived) derive();
         return kz;
     }
 
@@ -255,6 +275,7 @@ public class Ray {
      * @return {@code -d[kx]/d[kz]}
      */
     public final double shearX() {
+        if (!derived) derive();
         return shearX;
     }
 
@@ -264,6 +285,7 @@ public class Ray {
      * @return {@code -d[ky]/d[kz]}
      */
     public final double shearY() {
+        if (!derived) derive();
         return shearY;
     }
 
@@ -273,6 +295,7 @@ public class Ray {
      * @return {@code 1/d[kz]}
      */
     public final double shearZ() {
+        if (!derived) derive();
         return shearZ;
     }
 

@@ -28,14 +28,37 @@ class ReusableRayTest {
     @MethodSource("rays")
     void holdsExactlyWhatAConstructedRayHolds(double[] r) {
         Ray made = new Ray(new Point(r[0], r[1], r[2]), new Vector(r[3], r[4], r[5]));
-        // Reused: set somewhere else first, so nothing of the earlier ray may survive.
-        ReusableRay reused = new ReusableRay().set(1, 2, 3, -4, 5, -6).set(r[0], r[1], r[2], r[3], r[4], r[5]);
-        assertEquals(made, reused);
-        double[] a = fields(made), b = fields(reused);
+        // Reused: set somewhere else first, its constants read (a reusable ray derives them on first use), so
+        // nothing of the earlier ray may survive.
+        ReusableRay reused = new ReusableRay().set(1, 2, 3, -4, 5, -6);
+        fields(reused);
+        reused.set(r[0], r[1], r[2], r[3], r[4], r[5]);
+        assertSameRay(made, reused);
+    }
+
+    @ParameterizedTest
+    @MethodSource("rays")
+    void aMovedCopyHoldsExactlyWhatAConstructedRayHolds(double[] r) {
+        Ray made = new Ray(new Point(r[0], r[1], r[2]), new Vector(r[3], r[4], r[5]));
+        // Copied from a ray whose constants were not read yet, and from one whose constants were.
+        ReusableRay fresh = new ReusableRay().set(7, 8, 9, r[3], r[4], r[5]);
+        ReusableRay read = new ReusableRay().set(7, 8, 9, r[3], r[4], r[5]);
+        fields(read);
+        for (Ray source : new Ray[] {fresh, read}) {
+            ReusableRay moved = new ReusableRay().set(1, 2, 3, -4, 5, -6);
+            fields(moved);
+            assertSameRay(made, moved.setMoved(source, r[0], r[1], r[2]));
+        }
+        assertSameRay(new Ray(new Point(7, 8, 9), new Vector(r[3], r[4], r[5])), fresh);
+    }
+
+    private static void assertSameRay(Ray expected, Ray actual) {
+        assertEquals(expected, actual);
+        double[] a = fields(expected), b = fields(actual);
         for (int i = 0; i < a.length; i++)
             assertEquals(Double.doubleToRawLongBits(a[i]), Double.doubleToRawLongBits(b[i]));
-        assertEquals(made.getHead(), reused.getHead());
-        assertEquals(made.getDirection(), reused.getDirection());
+        assertEquals(expected.getHead(), actual.getHead());
+        assertEquals(expected.getDirection(), actual.getDirection());
     }
 
     private static double[] fields(Ray r) {
