@@ -20,13 +20,17 @@ final class SmallAngle {
 
     /** The sine of {@code x}, for |x| at most pi/4. */
     static double sin(double x) {
-        double x2 = x * x;
-        return x + x * x2 * (S3 + x2 * (S5 + x2 * (S7 + x2 * (S9 + x2 * (S11 + x2 * (S13 + x2 * S15))))));
+        double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+        double low = (S3 + x2 * S5) + x4 * (S7 + x2 * S9);
+        double high = (S11 + x2 * S13) + x4 * S15;
+        return x + x * x2 * (low + x8 * high);
     }
 
     /** The cosine of {@code x}, for |x| at most pi/4. */
     static double cos(double x) {
-        double x2 = x * x;
-        return 1 + x2 * (C2 + x2 * (C4 + x2 * (C6 + x2 * (C8 + x2 * (C10 + x2 * (C12 + x2 * (C14 + x2 * C16)))))));
+        double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+        double low = (C2 + x2 * C4) + x4 * (C6 + x2 * C8);
+        double high = (C10 + x2 * C12) + x4 * (C14 + x2 * C16);
+        return 1 + x2 * (low + x8 * high);
     }
 }

@@ -172,25 +172,30 @@ public final class SuperSamplingBlackboard {
     }
 
     /** Maps [0,1)^2 onto the disk of radius 1/2, area-preserving and stratum-preserving. */
-    private static void concentricDisk(double u, double v, double[] out, int at) {
+    static void concentricDisk(double u, double v, double[] out, int at) {
         double a = 2 * u - 1, b = 2 * v - 1;
         if (a == 0 && b == 0) {
             out[at] = 0;
             out[at + 1] = 0;
             return;
         }
-        // The angle is pi/4 (b/a) in the first case, pi/2 - pi/4 (a/b) in the second, whose cosine and sine are the
-        // sine and cosine of pi/4 (a/b): both quarter angles lie within [-pi/4, pi/4].
-        if (Math.abs(a) > Math.abs(b)) {
-            double phi = Math.PI / 4 * (b / a);
-            out[at] = 0.5 * a * SmallAngle.cos(phi);
-            out[at + 1] = 0.5 * a * SmallAngle.sin(phi);
-        } else {
-            double phi = Math.PI / 4 * (a / b);
-            out[at] = 0.5 * b * SmallAngle.sin(phi);
-            out[at + 1] = 0.5 * b * SmallAngle.cos(phi);
-        }
+        // The angle is pi/4 (b/a) where |a| > |b|, pi/2 - pi/4 (a/b) elsewhere, whose cosine and sine are the sine and
+        // cosine of pi/4 (a/b): both quarter angles lie within [-pi/4, pi/4]. Chosen by masks, not branches: which
+        // case a sample falls in is a coin toss the CPU mispredicts half the time.
+        long bitsA = Double.doubleToRawLongBits(a), bitsB = Double.doubleToRawLongBits(b);
+        // All ones where |a| > |b| (magnitudes order as their bit patterns do), else zero.
+        long first = ((bitsB & MAGNITUDE) - (bitsA & MAGNITUDE)) >> 63;
+        double large = Double.longBitsToDouble(bitsA & first | bitsB & ~first);
+        double small = Double.longBitsToDouble(bitsB & first | bitsA & ~first);
+        double phi = Math.PI / 4 * (small / large);
+        long cos = Double.doubleToRawLongBits(SmallAngle.cos(phi)),
+                sin = Double.doubleToRawLongBits(SmallAngle.sin(phi));
+        out[at] = 0.5 * large * Double.longBitsToDouble(cos & first | sin & ~first);
+        out[at + 1] = 0.5 * large * Double.longBitsToDouble(sin & first | cos & ~first);
     }
+
+    /** All bits of a double but its sign. */
+    private static final long MAGNITUDE = Long.MAX_VALUE;
 
     private static double wrap(double x) {
         return x >= 1 ? x - 1 : x;

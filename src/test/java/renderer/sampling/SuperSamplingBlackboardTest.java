@@ -159,6 +159,35 @@ class SuperSamplingBlackboardTest {
         return sum / ((double) n * n);
     }
 
+    /**
+     * The mapping chooses its case by masks instead of branches: it must give Shirley and Chiu's concentric map as the
+     * textbook writes it (here with Math's sine and cosine), on both sides of the diagonals, on the axes and at the
+     * centre.
+     */
+    @Test
+    void concentricDiskIsTheTextbookMapping() {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(20261126);
+        double[] out = new double[2];
+        for (int i = 0; i < 200_000; i++) {
+            double u = random.nextDouble(), v = random.nextDouble();
+            if (i % 5 == 0) v = i % 10 == 0 ? u : 1 - u; // on a diagonal, |a| = |b|
+            if (i % 7 == 0) u = 0.5; // a = 0
+            if (i % 11 == 0) v = 0.5; // b = 0
+            SuperSamplingBlackboard.concentricDisk(u, v, out, 0);
+            double a = 2 * u - 1, b = 2 * v - 1, x = 0, y = 0;
+            if (Math.abs(a) > Math.abs(b)) {
+                x = 0.5 * a * Math.cos(Math.PI / 4 * (b / a));
+                y = 0.5 * a * Math.sin(Math.PI / 4 * (b / a));
+            } else if (b != 0) {
+                x = 0.5 * b * Math.sin(Math.PI / 4 * (a / b));
+                y = 0.5 * b * Math.cos(Math.PI / 4 * (a / b));
+            }
+            String at = "(" + u + ", " + v + ")";
+            assertEquals(x, out[0], 0x1p-52, "x at " + at);
+            assertEquals(y, out[1], 0x1p-52, "y at " + at);
+        }
+    }
+
     @Test
     void diskSamplesCoverTheDiskEvenly() {
         // Equal-area rings: the inner disk of radius 0.5/sqrt(2) holds half the area, so about half the samples.
