@@ -98,8 +98,10 @@ final class PrimitiveCollector {
         return count++;
     }
 
-    /** The slot of {@code owner} in {@link #ownerTable}, added there the first time (a mesh's triangles look it up
-     * one after the other, so the last slot is tried first). */
+    /**
+     * The slot of {@code owner} in {@link #ownerTable}, added there the first time (a mesh's triangles look it up one
+     * after the other, so the last slot is tried first).
+     */
     private int ownerSlot(Geometry owner) {
         int last = ownerTable.size() - 1;
         if (last >= 0 && ownerTable.get(last) == owner) return last;
