@@ -67,6 +67,15 @@ public final class TraceContext {
     boolean firstRayMissed;
 
     /**
+     * The direct light at the first hit of the last primary ray, kept for the samples that shade that hit again where
+     * it is the same for every sample (see SimpleRayTracer): whether it is kept, its colour, and the light cut-off's
+     * budget it left.
+     */
+    boolean directKept;
+
+    double directR, directG, directB, directCutoffLeft;
+
+    /**
      * {@link #continueSequence(long, int, renderer.sampling.TargetShape, double[])} for the stream of {@code stream}
      * and {@code part} (a light's index, a level), mixed only in a progressive render: other renders pay one
      * comparison.
