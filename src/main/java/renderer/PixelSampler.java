@@ -128,7 +128,7 @@ final class PixelSampler {
             // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
             // after the first, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
             // reused.
-            if (again && !lens) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
+            if (again && pinholeCentre()) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
             else sample(u, v, path, ctx);
         } else {
             // The half's shifted Halton point over the pixel's area.
@@ -147,7 +147,7 @@ final class PixelSampler {
      * false, having done nothing, for samples over the pixel's area, through a lens, or a tracer that cannot.
      */
     boolean locateCentre(int x, int y, TraceContext ctx) {
-        if (antiAliasing.getSampleCount() != 1 || lens) return false;
+        if (!pinholeCentre()) return false;
         double u = centreU(x), v = centreV(y);
         if (!rayTracer.locate(camera.rayThrough(u, v, ctx.cameraRay), ctx)) return false;
         ctx.counters.camera++;
@@ -162,12 +162,17 @@ final class PixelSampler {
      * nothing, where it cannot.
      */
     boolean progressiveBatch(int x, int y, int half, int first, int count, TraceContext ctx) {
-        if (count < 2 || antiAliasing.getSampleCount() != 1 || lens) return false;
+        if (count < 2 || !pinholeCentre()) return false;
         long path = beginProgressive(x, y, half, first, ctx);
         boolean shaded = rayTracer.traceAgainBatch(ctx.cameraRay, ctx, path, count);
         ctx.sequenceIndex = -1;
         if (shaded) ctx.setColor(ctx.red * count, ctx.green * count, ctx.blue * count);
         return shaded;
+    }
+
+    /** Whether every progressive sample goes through the pixel's centre from a pinhole: one camera ray serves them. */
+    private boolean pinholeCentre() {
+        return antiAliasing.getSampleCount() == 1 && !lens;
     }
 
     /**

@@ -371,14 +371,14 @@ final class ProgressiveSampler {
     }
 
     /**
-     * The pixels whose variance is not zero, in order. The search for the plan's lambda sums the predicted MSE some
-     * 25 times; where most of the image is converged (a soft shadow's lit ground and umbra), most terms are zero.
+     * The pixels whose predicted MSE is not zero, in order. The search for the plan's lambda sums the predicted MSE
+     * some 25 times; where most of the image is converged (a soft shadow's lit ground and umbra), most terms are zero.
      */
-    private static int[] noisyPixels(double[] variance) {
+    private static int[] noisyPixels(double[] mse) {
         int count = 0;
-        for (double v : variance) if (v != 0) count++;
+        for (double m : mse) if (m != 0) count++;
         int[] noisy = new int[count];
-        for (int p = 0, k = 0; p < variance.length; p++) if (variance[p] != 0) noisy[k++] = p;
+        for (int p = 0, k = 0; p < mse.length; p++) if (mse[p] != 0) noisy[k++] = p;
         return noisy;
     }
 

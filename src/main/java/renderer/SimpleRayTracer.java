@@ -293,8 +293,8 @@ public class SimpleRayTracer extends RayTracerBase {
      * The direct light at the first hit into {@code ctx.red, green, blue}, kept for the samples that shade the same hit
      * again ({@link #traceAgain}, progressive samples through a pixel's centre): with hard lights only, it depends on
      * nothing a sample changes (its one shadow ray per light is the same ray), so every sample after the first takes
-     * the first one's values, and the light cut-off's budget as it left it. On glossy reflection in the accuracy
-     * report, the first hit's shading and shadow ray were a third of a progressive sample.
+     * the first one's values, and the light cut-off's budget as it left it. (The accuracy report's glossy reflection,
+     * progressive: 0.82-0.87x the time, 137,292 shadow rays -> 17,982 at RMSE 1.)
      */
     private void directAtFirstHit(
             SurfacePoint sp, Material m, double vx, double vy, double vz, double nv, TraceContext ctx, long path) {
