@@ -246,16 +246,17 @@ public final class AccuracyReport {
                     options.out().resolve("accuracy-" + experiment.slug() + "-crops.png"),
                     Crops.grid(variants.stream().map(Variant::label).toList(), columns, crops, experiment.crop()));
             markdown.append(section(experiment, byVariant, referenceSeconds, w, h));
-            List<ProgressiveCheck.Row> checks =
-                    ProgressiveCheck.run(experiment, reference, w, h, PROGRESSIVE_TARGETS, budgets(byVariant));
+            List<ProgressiveCheck.Row> checks = ProgressiveCheck.run(
+                    experiment, reference, w, h, PROGRESSIVE_TARGETS, budgets(byVariant), options.repeats());
             for (ProgressiveCheck.Row r : checks) {
                 log.printf(
                         Locale.ROOT,
-                        "  progressive %-10s: %7.3f s  predicted %7.3f  rmse %7.3f%s%n",
+                        "  progressive %-10s: %7.3f s  predicted %7.3f  rmse %7.3f%s%s%n",
                         r.asked(),
                         r.seconds(),
                         r.predicted(),
                         r.measured(),
+                        r.budget() > 0 ? "  (" + ProgressiveCheck.range(r) + ")" : "",
                         r.failed() ? "  MORE THAN 25% ABOVE THE TARGET" : "");
             }
             markdown.append(String.format(

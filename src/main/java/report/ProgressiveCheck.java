@@ -1,6 +1,7 @@
 package report;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import renderer.Camera;
@@ -28,6 +29,9 @@ final class ProgressiveCheck {
      * @param budget the time budget in seconds, or 0 for a target
      * @param predicted the RMSE the render predicted
      * @param measured the RMSE measured against the reference
+     * @param lowest the lowest of the repeated renders' measured RMSEs
+     * @param highest the highest of them
+     * @param renders how many renders were made of this request
      * @param seconds the render's wall time
      * @param samples the camera samples it took
      * @param fixedRmse for a budget: the RMSE of the fixed HALTON render whose time set the budget, else 0
@@ -39,6 +43,9 @@ final class ProgressiveCheck {
             double budget,
             double predicted,
             double measured,
+            double lowest,
+            double highest,
+            int renders,
             double seconds,
             long samples,
             double fixedRmse) {
@@ -49,8 +56,12 @@ final class ProgressiveCheck {
     }
 
     /**
-     * Runs the check: one render per target, one per budget (each budget the time of a fixed HALTON render whose
-     * error is given beside it).
+     * Runs the check: renders per target, renders per budget (each budget the time of a fixed HALTON render whose
+     * error is given beside it). Measured as the fixed renders are: one untimed warm-up render first (a short budget
+     * is otherwise spent partly by the JIT compiling the progressive path, which the fixed renders before it did not
+     * run), then {@code repeats} renders per row. A target's samples and image do not depend on time, so its row keeps
+     * the median time; a budget's samples do, so its row keeps the render of median error, and the range of the
+     * errors is kept beside it. A render slower than {@link AccuracyReport#SLOW_RENDER_SECONDS} is not repeated.
      */
     static List<Row> run(
             Experiment experiment,
@@ -58,21 +69,53 @@ final class ProgressiveCheck {
             int width,
             int height,
             double[] targets,
-            List<Measurement> budgets) {
-        List<Row> rows = new ArrayList<>();
+            List<Measurement> budgets,
+            int repeats) {
+        List<ProgressiveSettings> asked = new ArrayList<>();
+        List<Double> fixedRmse = new ArrayList<>();
         for (double target : targets) {
-            rows.add(render(experiment, reference, width, height, ProgressiveSettings.targetError(target), 0));
+            asked.add(ProgressiveSettings.targetError(target));
+            fixedRmse.add(0.0);
         }
         for (Measurement fixed : budgets) {
-            rows.add(render(
-                    experiment,
-                    reference,
-                    width,
-                    height,
-                    ProgressiveSettings.timeBudget(fixed.seconds()),
-                    fixed.rmse()));
+            asked.add(ProgressiveSettings.timeBudget(fixed.seconds()));
+            fixedRmse.add(fixed.rmse());
+        }
+        if (!asked.isEmpty()) render(experiment, reference, width, height, asked.get(0), 0); // warm-up
+        List<Row> rows = new ArrayList<>();
+        for (int k = 0; k < asked.size(); k++) {
+            List<Row> runs = new ArrayList<>();
+            do {
+                runs.add(render(experiment, reference, width, height, asked.get(k), fixedRmse.get(k)));
+            } while (runs.size() < repeats && runs.get(0).seconds() <= AccuracyReport.SLOW_RENDER_SECONDS);
+            rows.add(median(runs));
         }
         return rows;
+    }
+
+    /**
+     * Of repeated renders of one request, the one of median error (a time budget's error varies with the machine's
+     * speed), with the median time (a target's does not: only its time varies) and the errors' range.
+     */
+    static Row median(List<Row> runs) {
+        List<Row> byError = new ArrayList<>(runs);
+        byError.sort(Comparator.comparingDouble(Row::measured));
+        double[] seconds = runs.stream().mapToDouble(Row::seconds).sorted().toArray();
+        Row m = byError.get(runs.size() / 2);
+        double time = m.target() > 0 ? seconds[seconds.length / 2] : m.seconds();
+        return new Row(
+                m.experiment(),
+                m.asked(),
+                m.target(),
+                m.budget(),
+                m.predicted(),
+                m.measured(),
+                byError.get(0).measured(),
+                byError.get(byError.size() - 1).measured(),
+                runs.size(),
+                time,
+                m.samples(),
+                m.fixedRmse());
     }
 
     private static Row render(
@@ -96,6 +139,9 @@ final class ProgressiveCheck {
                 settings.timeBudgetSeconds(),
                 report.predictedError(),
                 measured,
+                measured,
+                measured,
+                1,
                 camera.getLastStatistics().wallSeconds(),
                 report.samples(),
                 fixedRmse);
@@ -104,20 +150,29 @@ final class ProgressiveCheck {
     /** The Markdown table of the rows. */
     static String table(List<Row> rows) {
         StringBuilder s = new StringBuilder(
-                "| asked | predicted RMSE | measured RMSE | time (s) | samples | fixed HALTON in that time |\n"
-                        + "|---|---:|---:|---:|---:|---:|\n");
+                "| asked | predicted RMSE | measured RMSE | time (s) | samples | fixed HALTON in that time |"
+                        + " budget renders' RMSEs |\n"
+                        + "|---|---:|---:|---:|---:|---:|---:|\n");
         for (Row r : rows) {
             s.append(String.format(
                     Locale.ROOT,
-                    "| %s | %.3f | %.3f%s | %.3f | %,d | %s |%n",
+                    "| %s | %.3f | %.3f%s | %.3f | %,d | %s | %s |%n",
                     r.asked(),
                     r.predicted(),
                     r.measured(),
                     r.failed() ? " (**more than 25% above the target**)" : "",
                     r.seconds(),
                     r.samples(),
-                    r.budget() > 0 ? String.format(Locale.ROOT, "RMSE %.3f", r.fixedRmse()) : ""));
+                    r.budget() > 0 ? String.format(Locale.ROOT, "RMSE %.3f", r.fixedRmse()) : "",
+                    r.budget() > 0 ? range(r) : ""));
         }
         return s.toString();
+    }
+
+    /** A budget row's spread: "1.98-2.41 (3 renders)", or its one error. */
+    static String range(Row r) {
+        return r.renders() > 1
+                ? String.format(Locale.ROOT, "%.3f-%.3f (%d renders)", r.lowest(), r.highest(), r.renders())
+                : String.format(Locale.ROOT, "%.3f (1 render)", r.measured());
     }
 }
