@@ -188,6 +188,37 @@ class SuperSamplingBlackboardTest {
         }
     }
 
+    /**
+     * A shifted Halton point wraps into [0, 1) by subtracting its floor, without a branch (which side a point falls on
+     * is a coin toss): it must be the textbook's {@code x >= 1 ? x - 1 : x} bit for bit, including shifts that land a
+     * point exactly on 1 and shifts just below 1.
+     */
+    @Test
+    void continuedHaltonPointsWrapAsTheTextbookSays() {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(20261126);
+        double[] out = new double[2 * 64];
+        for (int trial = 0; trial < 2_000; trial++) {
+            double rx = random.nextDouble(), ry = random.nextDouble();
+            if (trial % 4 == 1) rx = ry = 0.5; // point 1 is (1/2, 1/3): x lands on exactly 1
+            if (trial % 4 == 2) rx = ry = Math.nextDown(1.0);
+            if (trial % 4 == 3) rx = ry = 0;
+            long first = trial % 4 == 1 ? 0 : trial % 2 == 0 ? random.nextInt(1 << 20) : random.nextInt((1 << 14) - 64);
+            SuperSamplingBlackboard.haltonContinued(64, first, TargetShape.RECTANGLE, rx, ry, out);
+            for (int i = 0; i < 64; i++) {
+                int index = (int) first + i + 1;
+                double x = SuperSamplingBlackboard.radicalInverse(2, index) + rx;
+                double y = SuperSamplingBlackboard.radicalInverse(3, index) + ry;
+                x = x >= 1 ? x - 1 : x;
+                y = y >= 1 ? y - 1 : y;
+                String at = "point " + index + " shifted by (" + rx + ", " + ry + ")";
+                assertEquals(x - 0.5, out[2 * i], 0, "x of " + at);
+                // (Beyond the first 16,384 points the beams' base-3 coordinate sums its digits in another order than
+                // radicalInverse does, a last-bit difference that has nothing to do with the wrapping.)
+                if (index < 1 << 14) assertEquals(y - 0.5, out[2 * i + 1], 0, "y of " + at);
+            }
+        }
+    }
+
     @Test
     void diskSamplesCoverTheDiskEvenly() {
         // Equal-area rings: the inner disk of radius 0.5/sqrt(2) holds half the area, so about half the samples.
