@@ -33,7 +33,10 @@ final class ProgressiveSampler {
     private final int[] done, goal;
 
     private int passes;
-    /** Per-pixel arrays of the planning, reused from pass to pass (each plan fills them anew). */
+    /**
+     * Per-pixel arrays of the planning, reused from pass to pass: the means and weights are filled anew by each plan,
+     * the variances only where a pixel took samples since ({@link #varianceAt}).
+     */
     private final double[] varianceScratch, meanScratch, weightScratch;
     /** Per pixel, the samples per half its entry in {@code varianceScratch} was computed for (-1: never). */
     private final int[] varianceAt;

@@ -71,22 +71,17 @@ final class ProgressiveCheck {
             double[] targets,
             List<Measurement> budgets,
             int repeats) {
-        List<ProgressiveSettings> asked = new ArrayList<>();
-        List<Double> fixedRmse = new ArrayList<>();
-        for (double target : targets) {
-            asked.add(ProgressiveSettings.targetError(target));
-            fixedRmse.add(0.0);
-        }
+        List<Request> requests = new ArrayList<>();
+        for (double target : targets) requests.add(new Request(ProgressiveSettings.targetError(target), 0));
         for (Measurement fixed : budgets) {
-            asked.add(ProgressiveSettings.timeBudget(fixed.seconds()));
-            fixedRmse.add(fixed.rmse());
+            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed.rmse()));
         }
-        if (!asked.isEmpty()) render(experiment, reference, width, height, asked.get(0), 0); // warm-up
+        if (!requests.isEmpty()) render(experiment, reference, width, height, requests.get(0)); // warm-up
         List<Row> rows = new ArrayList<>();
-        for (int k = 0; k < asked.size(); k++) {
+        for (Request request : requests) {
             List<Row> runs = new ArrayList<>();
             do {
-                runs.add(render(experiment, reference, width, height, asked.get(k), fixedRmse.get(k)));
+                runs.add(render(experiment, reference, width, height, request));
             } while (runs.size() < repeats && runs.get(0).seconds() <= AccuracyReport.SLOW_RENDER_SECONDS);
             rows.add(median(runs));
         }
@@ -118,13 +113,11 @@ final class ProgressiveCheck {
                 m.fixedRmse());
     }
 
-    private static Row render(
-            Experiment experiment,
-            ImageWriter reference,
-            int width,
-            int height,
-            ProgressiveSettings settings,
-            double fixedRmse) {
+    /** What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time. */
+    private record Request(ProgressiveSettings settings, double fixedRmse) {}
+
+    private static Row render(Experiment experiment, ImageWriter reference, int width, int height, Request request) {
+        ProgressiveSettings settings = request.settings();
         Camera camera =
                 experiment.progressive(width, height).setProgressive(settings).renderImage();
         ProgressiveReport report = camera.getLastProgressiveReport();
@@ -144,7 +137,7 @@ final class ProgressiveCheck {
                 1,
                 camera.getLastStatistics().wallSeconds(),
                 report.samples(),
-                fixedRmse);
+                request.fixedRmse());
     }
 
     /** The Markdown table of the rows. */

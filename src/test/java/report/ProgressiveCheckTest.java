@@ -1,7 +1,7 @@
 package report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -38,7 +38,7 @@ class ProgressiveCheckTest {
         ProgressiveCheck.Row m = ProgressiveCheck.median(runs);
         assertEquals(0.12, m.seconds());
         assertEquals(2.05, m.measured());
-        assertTrue(!m.failed(), "2.05 is within 25% of 2");
+        assertFalse(m.failed(), "2.05 is within 25% of 2");
     }
 
     @Test
