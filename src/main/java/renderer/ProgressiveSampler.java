@@ -38,6 +38,8 @@ final class ProgressiveSampler {
      * the variances only where a pixel took samples since ({@link #varianceAt}).
      */
     private final double[] varianceScratch, meanScratch, weightScratch;
+    /** The 3 x 3 filters the planning applies to the variances. */
+    private final Neighbourhoods neighbourhoods;
     /** Per pixel, the samples per half its entry in {@code varianceScratch} was computed for (-1: never). */
     private final int[] varianceAt;
     /** The last predicted image MSE, and the samples taken when it was predicted (-1: none yet). */
@@ -66,6 +68,7 @@ final class ProgressiveSampler {
         Arrays.fill(varianceAt, -1);
         meanScratch = new double[n];
         weightScratch = new double[n];
+        neighbourhoods = new Neighbourhoods(nX, nY);
         law = new ConvergenceLaw(n);
         // A budget starts small (4 samples) so that a short budget is kept, and not below 4 even where the minimum is
         // lower: it spends its time by the estimates, which one sample per half makes too rough (the accuracy
@@ -182,16 +185,20 @@ final class ProgressiveSampler {
      * keep their estimate of zero.)
      */
     double predictedError() {
-        if (samples() != samplesPredicted) pixelMse(sampleVariances());
+        if (samples() != samplesPredicted) {
+            double[] variance = sampleVariances();
+            pixelMse(variance, neighbourhoods.largest(variance, weightScratch));
+        }
         return Math.sqrt(predictedMse);
     }
 
     /**
      * Each pixel's predicted MSE, the neighbourhood's variance of one sample over the pixel's samples (in a reused
-     * array), and their mean, the image's, into {@link #predictedMse} for the samples taken so far.
+     * array), and their mean, the image's, into {@link #predictedMse} for the samples taken so far; {@code largest}
+     * holds the neighbourhoods' largest variances.
      */
-    private double[] pixelMse(double[] variance) {
-        double[] mse = smoothed(variance, false, meanScratch);
+    private double[] pixelMse(double[] variance, double[] largest) {
+        double[] mse = neighbourhoods.mean(variance, largest, meanScratch);
         double total = 0;
         for (int p = 0; p < mse.length; p++) {
             mse[p] /= 2.0 * done[p];
@@ -223,11 +230,12 @@ final class ProgressiveSampler {
      */
     long planForError(double target) {
         double[] variance = sampleVariances();
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
         // Also kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
-        double[] mse = pixelMse(variance);
+        double[] mse = pixelMse(variance, largest);
         law.fit(mse, done);
         if (predictedMse <= target * target) return 0;
-        double[] weight = weights(variance);
+        double[] weight = weights(largest);
         // Per noisy pixel, its MSE times done^alpha: times goal^-alpha, its MSE after the pass.
         int[] noisy = noisyPixels(mse);
         double[] powers = law.inversePowers(largestHalfGoal());
@@ -279,7 +287,7 @@ final class ProgressiveSampler {
             }
             return planned; // 0 when not even the lowest pixels can be raised in time: the render ends
         }
-        double[] weight = weights(sampleVariances());
+        double[] weight = weights(neighbourhoods.largest(sampleVariances(), weightScratch));
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
         while (hi - lo > 1e-3 * hi) {
@@ -300,17 +308,17 @@ final class ProgressiveSampler {
     /**
      * Each pixel's share of new samples: the standard deviation of one sample, from the largest variance of its 3 x 3
      * neighbourhood, plus a twentieth of the image's mean, so that no pixel is given up on for having looked flat
-     * to its first samples.
+     * to its first samples. Computed in place, in the array of the neighbourhoods' largest variances.
      */
-    private double[] weights(double[] variance) {
-        double[] weight = smoothed(variance, true, weightScratch);
+    private static double[] weights(double[] largest) {
+        double[] weight = largest;
         double mean = 0;
-        for (int p = 0; p < variance.length; p++) {
+        for (int p = 0; p < weight.length; p++) {
             weight[p] = Math.sqrt(weight[p]);
             mean += weight[p];
         }
-        mean /= variance.length;
-        for (int p = 0; p < variance.length; p++) weight[p] += 0.05 * mean;
+        mean /= weight.length;
+        for (int p = 0; p < weight.length; p++) weight[p] += 0.05 * mean;
         return weight;
     }
 
@@ -327,45 +335,6 @@ final class ProgressiveSampler {
             varianceAt[p] = done[p];
         }
         return v;
-    }
-
-    /**
-     * Per pixel, the mean (or, with {@code largest}, the largest) of {@code values} over its 3 x 3 neighbourhood:
-     * neighbours see much the same noise, and an edge that one pixel's samples all missed is often seen by a
-     * neighbour's. One pass over the image in pixel order, each neighbourhood summed row by row.
-     */
-    private double[] smoothed(double[] values, boolean largest, double[] out) {
-        for (int y = 0; y < nY; y++) {
-            int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
-            for (int x = 0; x < nX; x++) {
-                int i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
-                if (j1 - j0 == 2 && i1 - i0 == 2) {
-                    // A whole neighbourhood, unrolled: the same sums in the same order as the loops below.
-                    int a = j0 * nX + i0, b = a + nX, c = b + nX;
-                    double v0 = values[a], v1 = values[a + 1], v2 = values[a + 2];
-                    double v3 = values[b], v4 = values[b + 1], v5 = values[b + 2];
-                    double v6 = values[c], v7 = values[c + 1], v8 = values[c + 2];
-                    out[y * nX + x] = largest
-                            ? Math.max(
-                                    Math.max(
-                                            Math.max(Math.max(Math.max(Math.max(0, v0), v1), v2), v3),
-                                            Math.max(Math.max(v4, v5), v6)),
-                                    Math.max(v7, v8))
-                            : (0 + v0 + v1 + v2 + v3 + v4 + v5 + v6 + v7 + v8) / 9;
-                    continue;
-                }
-                double sum = 0, max = 0;
-                for (int j = j0; j <= j1; j++) {
-                    for (int i = i0; i <= i1; i++) {
-                        double v = values[j * nX + i];
-                        sum += v;
-                        max = Math.max(max, v);
-                    }
-                }
-                out[y * nX + x] = largest ? max : sum / ((j1 - j0 + 1) * (i1 - i0 + 1));
-            }
-        }
-        return out;
     }
 
     /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
