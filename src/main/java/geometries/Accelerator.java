@@ -248,6 +248,35 @@ public final class Accelerator implements Intersectable {
     }
 
     /**
+     * Whether {@link #blockShadowPacket} applies: no tree to search (brute force, or one bounded primitive), every
+     * bounded primitive a whole object (no mesh triangles), and nothing that may let light through.
+     *
+     * @return true when packets of shadow segments may be tested here
+     */
+    public boolean testsShadowPackets() {
+        return shadows.testsPackets;
+    }
+
+    /**
+     * The shadow query for a packet of segments at once (where {@link #testsShadowPackets}): marks each segment an
+     * opaque surface blocks. The answers are those of {@link #passesLight} over each segment's interval
+     * {@code (0, tMax)}, bit for bit, with the surface {@code scratch} leaves ({@link HitRecord#leaveSurface}) left
+     * out as there; the occluder cache is neither read nor written.
+     *
+     * @param packet the segments
+     * @param scratch a record the queries may overwrite, holding the surface the segments leave
+     * @throws IllegalStateException if packets do not apply to this accelerator
+     */
+    public void blockShadowPacket(ShadowPacket packet, HitRecord scratch) {
+        if (!shadows.testsPackets) {
+            throw new IllegalStateException(
+                    "shadow packets need brute-force search or a single bounded primitive, whole objects only, "
+                            + "and no transparent surfaces; test the segments with passesLight instead");
+        }
+        shadows.blockPacket(packet, scratch);
+    }
+
+    /**
      * Announces a beam of shadow queries through {@code scratch}: segments that start within {@code radius} (per
      * axis) of (px, py, pz) and end within {@code radius} of (cx, cy, cz), such as the rays from shading points toward
      * a disk light. The tree is then searched once for the beam, and every {@link #passesLight} query whose segment

@@ -43,6 +43,18 @@ public interface Intersectable {
     }
 
     /**
+     * Marks the segments of {@code packet} this object blocks: for each segment not blocked yet, the answer of
+     * {@link #occludes} over the segment's interval, {@code (0, tMax)}. Overridden where a loop over the segments
+     * gives the same answers faster.
+     *
+     * @param packet the segments; those found blocked are marked
+     * @param scratch a record the queries may overwrite
+     */
+    default void blockAll(ShadowPacket packet, HitRecord scratch) {
+        packet.blockEach(this, scratch);
+    }
+
+    /**
      * The axis-aligned bounds, or {@code null} for unbounded geometry (planes, infinite tubes).
      *
      * @return the bounding box, or null when unbounded

@@ -37,6 +37,8 @@ final class ShadowQueries {
     private final BVH bvh;
     /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
+    /** See {@link Accelerator#testsShadowPackets}. */
+    final boolean testsPackets;
 
     ShadowQueries(CompiledPrimitives primitives, BVH bvh) {
         boundedCount = primitives.boundedCount;
@@ -51,6 +53,28 @@ final class ShadowQueries {
         unboundedClear = primitives.unboundedClear;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
+        boolean objectsOnly = true;
+        for (int k = 0; k < boundedCount; k++) objectsOnly &= info[INFO * k + EDGES] == OBJECT;
+        testsPackets = !searchesTree && objectsOnly && !primitives.mayTransmit();
+    }
+
+    /**
+     * See {@link Accelerator#blockShadowPacket}: each primitive the segments do not leave, against all open segments
+     * (with every primitive opaque, a segment is blocked when any one blocks it, whatever the order).
+     */
+    void blockPacket(ShadowPacket packet, HitRecord scratch) {
+        long tests = 0;
+        for (Intersectable surface : unbounded) {
+            if (surface == scratch.leaving) continue;
+            tests += packet.open();
+            surface.blockAll(packet, scratch);
+        }
+        for (int k = 0; k < boundedCount; k++) {
+            if (leftBy(k, scratch)) continue;
+            tests += packet.open();
+            objects[k].blockAll(packet, scratch);
+        }
+        scratch.primitiveTests += tests;
     }
 
     /** See {@link Accelerator#occludes}. */

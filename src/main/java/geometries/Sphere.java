@@ -73,13 +73,28 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
-        double fx = ray.ox() - center.x, fy = ray.oy() - center.y, fz = ray.oz() - center.z;
-        double b = -(fx * ray.dx() + fy * ray.dy() + fz * ray.dz());
-        double lx = fx + b * ray.dx(), ly = fy + b * ray.dy(), lz = fz + b * ray.dz();
+        double t = hitDistance(ray.ox(), ray.oy(), ray.oz(), ray.dx(), ray.dy(), ray.dz(), tMin, tMax);
+        if (!(t > tMin)) return false; // NaN: no hit in the interval
+        hit.t = t;
+        hit.geometry = this;
+        hit.part = 0;
+        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
+        return true;
+    }
+
+    /**
+     * The nearest root of the ray (origin o, unit direction d) in {@code (tMin, tMax)}, or NaN when there is none: the
+     * one computation behind {@link #intersect} and {@link #blockAll}, so that both give the same answers.
+     */
+    private double hitDistance(
+            double ox, double oy, double oz, double dx, double dy, double dz, double tMin, double tMax) {
+        double fx = ox - center.x, fy = oy - center.y, fz = oz - center.z;
+        double b = -(fx * dx + fy * dy + fz * dz);
+        double lx = fx + b * dx, ly = fy + b * dy, lz = fz + b * dz;
         double discriminant = radiusSquared - (lx * lx + ly * ly + lz * lz);
-        if (!(discriminant > 0)) return false;
+        if (!(discriminant > 0)) return Double.NaN;
         double q = b + Math.copySign(Math.sqrt(discriminant), b);
-        if (q == 0) return false;
+        if (q == 0) return Double.NaN;
         double c = fx * fx + fy * fy + fz * fz - radiusSquared;
         double t0 = c / q;
         double t1 = q;
@@ -88,15 +103,27 @@ public class Sphere extends Geometry {
             t0 = t1;
             t1 = s;
         }
-        double t;
-        if (t0 > tMin && t0 < tMax) t = t0;
-        else if (t1 > tMin && t1 < tMax) t = t1;
-        else return false;
-        hit.t = t;
-        hit.geometry = this;
-        hit.part = 0;
-        hit.u = hit.v = 0; // no surface parametrisation: never leave another primitive's values behind
-        return true;
+        if (t0 > tMin && t0 < tMax) return t0;
+        if (t1 > tMin && t1 < tMax) return t1;
+        return Double.NaN;
+    }
+
+    /**
+     * The packet's open segments against this sphere in one loop, by the arithmetic of {@link #intersect} (a subclass,
+     * which may intersect otherwise, tests them one by one through its own queries).
+     */
+    @Override
+    public void blockAll(ShadowPacket packet, HitRecord scratch) {
+        if (getClass() != Sphere.class) {
+            packet.blockEach(this, scratch);
+            return;
+        }
+        boolean[] blocked = packet.blocked;
+        double[] ox = packet.ox, oy = packet.oy, oz = packet.oz, dx = packet.dx, dy = packet.dy, dz = packet.dz;
+        double[] tMax = packet.tMax;
+        for (int i = 0, n = packet.size; i < n; i++) {
+            if (!blocked[i]) blocked[i] = hitDistance(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], 0, tMax[i]) > 0;
+        }
     }
 
     @Override

@@ -2,6 +2,7 @@ package renderer;
 
 import geometries.Accelerator;
 import geometries.HitRecord;
+import geometries.ShadowPacket;
 import lighting.LightSample;
 import lighting.LightSource;
 import primitives.Color;
@@ -218,6 +219,10 @@ final class DirectLightEstimator {
             int li,
             int[] occluders,
             TraceContext ctx) {
+        if (count > 1 && accelerator.testsShadowPackets()) {
+            packetVisibility(sp, c, diameter, count, offsets, ctx);
+            return;
+        }
         double r = 0, g = 0, b = 0;
         double firstR = 0, firstG = 0, firstB = 0;
         boolean uniform = true;
@@ -253,6 +258,42 @@ final class DirectLightEstimator {
             ctx.visibleG = g / count;
             ctx.visibleB = b / count;
         }
+    }
+
+    /**
+     * {@link #diskVisibility} where every surface is opaque and no tree is searched: the rays in one packet, each
+     * primitive tested against all of them ({@link Accelerator#blockShadowPacket}). Each ray passes whole or not at
+     * all, so the sums and the uniform case come out as the rays one by one give them.
+     */
+    private void packetVisibility(
+            SurfacePoint sp, Point c, double diameter, int count, double[] offsets, TraceContext ctx) {
+        ShadowPacket packet = ctx.shadowPacket;
+        packet.clear();
+        int passed = 0; // rays toward a disk point on the shading point itself: lit, as shadowTo says
+        for (int i = 0; i < count; i++) {
+            double a = offsets[2 * i] * diameter, bb = offsets[2 * i + 1] * diameter;
+            double qx = c.x + a * sp.e1x + bb * sp.e2x;
+            double qy = c.y + a * sp.e1y + bb * sp.e2y;
+            double qz = c.z + a * sp.e1z + bb * sp.e2z;
+            double dx = qx - sp.px, dy = qy - sp.py, dz = qz - sp.pz;
+            if (dx == 0 && dy == 0 && dz == 0) {
+                passed++;
+                continue;
+            }
+            sp.spawn(dx, dy, dz);
+            double ox = qx - sp.originX, oy = qy - sp.originY, oz = qz - sp.originZ;
+            if (ox == 0 && oy == 0 && oz == 0) {
+                passed++;
+                continue;
+            }
+            packet.add(sp.originX, sp.originY, sp.originZ, ox, oy, oz, Vector.length(ox, oy, oz));
+        }
+        ctx.counters.shadow += packet.size();
+        accelerator.blockShadowPacket(packet, ctx.shadowHit);
+        for (int i = 0, n = packet.size(); i < n; i++) if (!packet.blocked(i)) passed++;
+        ctx.diskUniform = passed == 0 || passed == count;
+        double visible = passed == count ? 1 : passed / (double) count;
+        ctx.visibleR = ctx.visibleG = ctx.visibleB = visible;
     }
 
     /** Equality as {@link Double3#equals} and {@link Color#equals} decide it. */

@@ -1,6 +1,7 @@
 package renderer;
 
 import geometries.HitRecord;
+import geometries.ShadowPacket;
 import primitives.Color;
 import primitives.ReusableRay;
 import renderer.sampling.SampleStream;
@@ -22,6 +23,8 @@ public final class TraceContext {
     public final ReusableRay ray = new ReusableRay();
     /** The ray of shadow queries. */
     public final ReusableRay shadowRay = new ReusableRay();
+    /** The shadow rays of one disk light's beam, where they are tested together. */
+    final ShadowPacket shadowPacket = new ShadowPacket();
     /** Random numbers, re-seeded per pixel, light and bounce. */
     public final SampleStream random = new SampleStream();
     /** Counts of the rays this thread fired. */

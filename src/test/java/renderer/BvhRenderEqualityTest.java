@@ -41,6 +41,55 @@ class BvhRenderEqualityTest {
         assertTrue(lit > withBvh.getNx() * withBvh.getNy() / 2, "the image shows the scene, not just black");
     }
 
+    /**
+     * Opaque spheres over a plane under a soft light: by brute force their shadow rays are tested in packets (each
+     * sphere against a whole beam), through the tree one by one; the images are the same bit for bit, for fixed
+     * samples and for progressive ones, whose batches put several samples' beams in one packet.
+     */
+    @Test
+    void shadowPacketsRenderAsSingleShadowRaysDo() {
+        for (ProgressiveSettings progressive : new ProgressiveSettings[] {null, ProgressiveSettings.targetError(3)}) {
+            ImageWriter tree = renderSpheres(true, progressive), packets = renderSpheres(false, progressive);
+            int penumbra = 0;
+            for (int y = 0; y < tree.getNy(); y++) {
+                for (int x = 0; x < tree.getNx(); x++) {
+                    Color a = tree.getPixel(x, y), b = packets.getPixel(x, y);
+                    String where = "pixel (" + x + ", " + y + "), progressive " + progressive;
+                    assertEquals(Double.doubleToLongBits(a.getR()), Double.doubleToLongBits(b.getR()), where);
+                    assertEquals(Double.doubleToLongBits(a.getG()), Double.doubleToLongBits(b.getG()), where);
+                    assertEquals(Double.doubleToLongBits(a.getB()), Double.doubleToLongBits(b.getB()), where);
+                    if (a.getR() > 40 && a.getR() < 120) penumbra++;
+                }
+            }
+            assertTrue(penumbra > 20, "the image has soft shadows to compare: " + penumbra + " mid-tone pixels");
+        }
+    }
+
+    private static ImageWriter renderSpheres(boolean useBvh, ProgressiveSettings progressive) {
+        Scene scene = new Scene("shadow-packets").setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.05));
+        scene.geometries.add(new Plane(new Point(0, 0, 0), Vector.AXIS_Z).setMaterial(new Material().setKd(0.6)));
+        for (int i = 0; i < 5; i++) {
+            scene.geometries.add(new Sphere(new Point(-1.2 + 0.6 * i, 0.3 * (i % 2), 0.6 + 0.15 * i), 0.25)
+                    .setMaterial(new Material().setKd(0.5)));
+        }
+        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point(0.5, -0.5, 3))
+                .setRadius(0.4)
+                .setNumSamples(2));
+        Camera camera = Camera.getBuilder()
+                .setLocation(new Point(0, -4, 3))
+                .setDirection(new Point(0, 0, 0.3), Vector.AXIS_Z)
+                .setVpDistance(1)
+                .setVpSize(1.2, 0.9)
+                .setResolution(40, 30)
+                .setRayTracer(scene, RayTracerType.SIMPLE)
+                .setBvh(useBvh)
+                .setThreads(useBvh ? 2 : 1)
+                .build();
+        if (progressive != null) camera.setProgressive(progressive);
+        camera.renderImage();
+        return camera.getImage();
+    }
+
     private static ImageWriter render(boolean useBvh, int threads) {
         Scene scene = new Scene("bvh-equality")
                 .setBackground(new Color(10, 10, 20))

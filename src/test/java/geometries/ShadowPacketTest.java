@@ -1,0 +1,162 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import primitives.Material;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * Packets of shadow segments ({@link Accelerator#blockShadowPacket}) give the answers of one {@link
+ * Accelerator#passesLight} query per segment, bit for bit: spheres (their own loop), a sphere subclass and cylinders
+ * (one query per segment), a plane, nested lists, segments that start on a sphere or end inside one, and a surface
+ * the segments leave, which both leave out.
+ */
+class ShadowPacketTest {
+    static Stream<Arguments> seeds() {
+        return LongStream.range(0, 6).mapToObj(i -> Arguments.of(0x5AC4L + 104_729L * i));
+    }
+
+    /** A sphere whose queries are its own: the packet must ask them, not the sphere's loop. */
+    private static final class ShrunkSphere extends Sphere {
+        ShrunkSphere(Point centre, double radius) {
+            super(centre, radius);
+        }
+
+        @Override
+        public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
+            // Hits only where the ray's origin lies above the centre: not what Sphere's arithmetic says.
+            return ray.oz() > getCenter().z && super.intersect(ray, tMin, tMax, hit);
+        }
+    }
+
+    private static Geometries opaqueScene(Random random, Plane floor) {
+        Geometries scene = new Geometries(floor);
+        Geometries nested = new Geometries();
+        for (int i = 0; i < 12; i++) {
+            Point c = new Point(random.nextGaussian() * 2, random.nextGaussian() * 2, 1 + random.nextDouble() * 3);
+            double r = 0.2 + random.nextDouble();
+            Geometry g = switch (random.nextInt(4)) {
+                case 0 -> new ShrunkSphere(c, r);
+                case 1 ->
+                    new Cylinder(r, new Ray(c, SurfaceStartProperty.randomUnit(random)), 0.5 + random.nextDouble());
+                default -> new Sphere(c, r);
+            };
+            if (random.nextBoolean()) nested.add(g);
+            else scene.add(g);
+        }
+        scene.add(nested);
+        return scene;
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void packetsAnswerAsOneQueryPerSegment(long seed) {
+        Random random = new Random(seed);
+        Plane floor = new Plane(new Point(0, 0, 0), new Vector(0, 0, 1));
+        Geometries scene = opaqueScene(random, floor);
+        Accelerator brute = Accelerator.build(scene, false);
+        assertTrue(brute.testsShadowPackets());
+        ShadowPacket packet = new ShadowPacket();
+        HitRecord scratch = new HitRecord(), single = new HitRecord();
+        int blocked = 0, segments = 0;
+        for (int p = 0; p < 400; p++) {
+            // From the floor (left out, as a shading point's own flat surface) or from anywhere (nothing left out),
+            // toward a disk-light-like cluster of ends, some of them inside or beyond the spheres.
+            boolean fromFloor = p % 3 == 0;
+            // Just below the floor now and then: the floor's query then finds it ahead, unless left out.
+            double z = fromFloor ? (random.nextBoolean() ? 0 : -1e-9) : random.nextGaussian() * 3;
+            Point from = new Point(random.nextGaussian() * 3, random.nextGaussian() * 3, z);
+            Point light = new Point(random.nextGaussian() * 3, random.nextGaussian() * 3, 2 + random.nextDouble() * 4);
+            Geometry leaving = fromFloor ? floor : null;
+            scratch.leaveSurface(leaving, 0);
+            single.leaveSurface(leaving, 0);
+            packet.clear();
+            int n = 1 + random.nextInt(40);
+            double[][] segment = new double[n][];
+            for (int i = 0; i < n; i++) {
+                double vx = light.x + 0.5 * random.nextGaussian() - from.x;
+                double vy = light.y + 0.5 * random.nextGaussian() - from.y;
+                double vz = light.z + 0.5 * random.nextGaussian() - from.z;
+                double tMax = Math.sqrt(vx * vx + vy * vy + vz * vz) * (random.nextInt(5) == 0 ? 0.3 : 1);
+                segment[i] = new double[] {vx, vy, vz, tMax};
+                packet.add(from.x, from.y, from.z, vx, vy, vz, tMax);
+            }
+            brute.blockShadowPacket(packet, scratch);
+            assertEquals(n, packet.size());
+            for (int i = 0; i < n; i++) {
+                Ray ray = new Ray(from, new Vector(segment[i][0], segment[i][1], segment[i][2]));
+                single.occluderHint = -1;
+                boolean passes = brute.passesLight(ray, 0, segment[i][3], single);
+                assertEquals(!passes, packet.blocked(i), "seed " + seed + ", packet " + p + ", segment " + i);
+                if (!passes) blocked++;
+                segments++;
+            }
+        }
+        // Both answers occur often enough for the comparison to mean something.
+        assertTrue(blocked > segments / 10 && blocked < segments * 9 / 10, blocked + " of " + segments);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void segmentsFromASphereAnswerAsSingleQueries(long seed) {
+        // Shadow rays from points on the sphere itself (offset as a renderer offsets them), toward both sides: the
+        // roots near zero decide.
+        Random random = new Random(seed);
+        Sphere sphere = new Sphere(new Point(0.3, -0.2, 1), 0.5);
+        Accelerator flat = Accelerator.build(new Geometries(sphere), true); // one bounded primitive: no tree
+        assertTrue(flat.testsShadowPackets());
+        ShadowPacket packet = new ShadowPacket();
+        HitRecord scratch = new HitRecord(), single = new HitRecord();
+        for (int p = 0; p < 300; p++) {
+            Vector n = SurfaceStartProperty.randomUnit(random);
+            Point on = sphere.getCenter().add(n.scale(0.5 * (1 + (random.nextInt(3) - 1) * 1e-15)));
+            packet.clear();
+            Vector[] d = new Vector[16];
+            for (int i = 0; i < d.length; i++) {
+                d[i] = SurfaceStartProperty.randomUnit(random);
+                packet.add(on.x, on.y, on.z, d[i].x, d[i].y, d[i].z, 3);
+            }
+            flat.blockShadowPacket(packet, scratch);
+            for (int i = 0; i < d.length; i++) {
+                single.occluderHint = -1;
+                assertEquals(!flat.passesLight(new Ray(on, d[i]), 0, 3, single), packet.blocked(i));
+            }
+        }
+    }
+
+    @Test
+    void packetsApplyOnlyWithoutATreeTrianglesOrTransparency() {
+        Sphere a = new Sphere(new Point(0, 0, 0), 1), b = new Sphere(new Point(3, 0, 0), 1);
+        assertTrue(Accelerator.build(new Geometries(a, b), false).testsShadowPackets());
+        Accelerator tree = Accelerator.build(new Geometries(a, b), true);
+        assertFalse(tree.testsShadowPackets());
+        IllegalStateException e = assertThrows(
+                IllegalStateException.class, () -> tree.blockShadowPacket(new ShadowPacket(), new HitRecord()));
+        assertTrue(e.getMessage().contains("passesLight"), e.getMessage());
+        Triangle t = new Triangle(new Point(0, 0, 5), new Point(1, 0, 5), new Point(0, 1, 5));
+        assertFalse(Accelerator.build(new Geometries(a, t), false).testsShadowPackets());
+        Sphere glass = new Sphere(new Point(0, 3, 0), 1);
+        glass.setMaterial(new Material().setKt(0.5));
+        assertFalse(Accelerator.build(new Geometries(a, glass), false).testsShadowPackets());
+    }
+
+    @Test
+    void aPacketRefusesWhatASingleRayRefuses() {
+        ShadowPacket packet = new ShadowPacket();
+        assertThrows(IllegalArgumentException.class, () -> packet.add(0, 0, 0, 0, 0, 0, 1));
+        assertThrows(IllegalArgumentException.class, () -> packet.add(Double.NaN, 0, 0, 1, 0, 0, 1));
+        assertEquals(0, packet.size());
+    }
+}
