@@ -57,9 +57,10 @@ final class ProgressiveCheck {
 
     /**
      * Runs the check: renders per target, renders per budget (each budget the time of a fixed HALTON render whose
-     * error is given beside it). Measured as the fixed renders are: one untimed warm-up render first (a short budget
-     * is otherwise spent partly by the JIT compiling the progressive path, which the fixed renders before it did not
-     * run), then {@code repeats} renders per row. A target's samples and image do not depend on time, so its row keeps
+     * error is given beside it). Measured in a JVM as warm as the fixed renders': every request rendered once,
+     * untimed, first (a short budget is otherwise spent partly by the JIT compiling the progressive path, which the
+     * fixed renders before it did not run: anti-aliasing's 0.09 s budget needed about four renders to settle), then
+     * {@code repeats} renders per row. A target's samples and image do not depend on time, so its row keeps
      * the median time; a budget's samples do, so its row keeps the render of median error, and the range of the
      * errors is kept beside it. A render slower than {@link AccuracyReport#SLOW_RENDER_SECONDS} is not repeated.
      */
@@ -76,7 +77,9 @@ final class ProgressiveCheck {
         for (Measurement fixed : budgets) {
             requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed.rmse()));
         }
-        if (!requests.isEmpty()) render(experiment, reference, width, height, requests.get(0)); // warm-up
+        // Warm-up, untimed: every request once, so that the JIT has compiled both plans (toward an error and for a
+        // budget) before the first timed render, as the fixed renders before these ran their path many times.
+        for (Request request : requests) render(experiment, reference, width, height, request);
         List<Row> rows = new ArrayList<>();
         for (Request request : requests) {
             List<Row> runs = new ArrayList<>();
