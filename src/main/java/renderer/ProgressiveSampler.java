@@ -50,6 +50,8 @@ final class ProgressiveSampler {
     private final ConvergenceLaw law;
     /** Samples every pixel reaches first. */
     private final int minimum;
+    /** A time budget's end, which stops a pass where it has come to (armed after the first pass). */
+    private final BudgetDeadline deadline = new BudgetDeadline(System::nanoTime);
 
     ProgressiveSampler(PixelSampler pixels, ProgressiveSettings settings, int nX, int nY) {
         this.pixels = pixels;
@@ -89,6 +91,8 @@ final class ProgressiveSampler {
         pass.run();
         passes++;
         double perSample = (System.nanoTime() - passStart) * 1e-9 / Math.max(1, samples());
+        // The first pass gives every pixel its samples whatever the time; later passes stop at the budget's end.
+        if (budget > 0) deadline.arm(start + (long) (budget * 1e9));
         while (true) {
             long planned;
             if (budget > 0) {
@@ -120,11 +124,14 @@ final class ProgressiveSampler {
     /** Bytes per pixel of this state: the halves' sums, the counts, the planning's arrays and the law's record. */
     static final int BYTES_PER_PIXEL = 6 * 8 + 3 * 4 + 3 * 8 + 8 + 4;
 
-    /** Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass). */
+    /**
+     * Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass), unless a
+     * time budget has run out: the pixel then keeps the samples it has.
+     */
     void advance(int x, int y, TraceContext ctx) {
         int p = y * nX + x;
         int from = done[p], to = goal[p];
-        if (to <= from) return;
+        if (to <= from || deadline.passed(ctx)) return;
         // Centre samples of a pinhole camera: one camera ray per pixel and pass, its first hit shaded again by every
         // sample, and where they can by all of a half's samples at once (the shadow rays of every sample).
         boolean located = pixels.locateCentre(x, y, ctx);

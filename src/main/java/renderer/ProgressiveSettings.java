@@ -78,7 +78,9 @@ public record ProgressiveSettings(double targetError, double timeBudgetSeconds, 
     }
 
     /**
-     * Sample for {@code seconds} of wall time in all, spending samples where the estimated error is highest.
+     * Sample for {@code seconds} of wall time in all, spending samples where the estimated error is highest. The first
+     * pass (4 samples per pixel) always completes, so the image is complete; every later pass stops where it has come
+     * to when the time is up.
      *
      * @param seconds the wall time of the whole render, positive
      * @return the settings

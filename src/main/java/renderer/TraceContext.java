@@ -23,6 +23,9 @@ public final class TraceContext {
     public final ReusableRay ray = new ReusableRay();
     /** The ray of shadow queries. */
     public final ReusableRay shadowRay = new ReusableRay();
+    /** Pixels this thread advances before it reads the clock again ({@link BudgetDeadline}). */
+    int deadlineCountdown;
+
     /** The shadow rays of one disk light's beam, where they are tested together. */
     final ShadowPacket shadowPacket = new ShadowPacket();
     /** Random numbers, re-seeded per pixel, light and bounce. */
