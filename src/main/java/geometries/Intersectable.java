@@ -45,7 +45,8 @@ public interface Intersectable {
     /**
      * Marks the segments of {@code packet} this object blocks: for each segment not blocked yet, the answer of
      * {@link #occludes} over the segment's interval, {@code (0, tMax)}. Overridden where a loop over the segments
-     * gives the same answers faster.
+     * gives the same answers faster (with {@link ShadowPacket#segment}, {@link ShadowPacket#end} and
+     * {@link ShadowPacket#block}).
      *
      * @param packet the segments; those found blocked are marked
      * @param scratch a record the queries may overwrite

@@ -12,6 +12,8 @@ import primitives.ReusableRay;
  */
 public final class ShadowPacket {
     int size;
+    /** Segments not blocked yet. */
+    int open;
     /** Per segment: origin, unit direction (as a {@link Ray} normalizes it), end, and the direction as given. */
     double[] ox, oy, oz, dx, dy, dz, tMax, vx, vy, vz;
     /** Per segment: whether a primitive tested so far blocks it. */
@@ -49,6 +51,7 @@ public final class ShadowPacket {
     /** Empties the packet. */
     public void clear() {
         size = 0;
+        open = 0;
     }
 
     /**
@@ -78,6 +81,7 @@ public final class ShadowPacket {
         this.vy[i] = vy;
         this.vz[i] = vz;
         blocked[i] = false;
+        open++;
     }
 
     /**
@@ -99,11 +103,45 @@ public final class ShadowPacket {
         return blocked[i];
     }
 
-    /** Segments not blocked yet. */
-    int open() {
-        int n = 0;
-        for (int i = 0; i < size; i++) if (!blocked[i]) n++;
-        return n;
+    /**
+     * The segments not blocked yet.
+     *
+     * @return how many segments no primitive has blocked so far
+     */
+    public int open() {
+        return open;
+    }
+
+    /**
+     * Marks segment {@code i} blocked (for an {@link Intersectable#blockAll} of one's own).
+     *
+     * @param i the segment's index, below {@link #size}
+     */
+    public void block(int i) {
+        if (blocked[i]) return;
+        blocked[i] = true;
+        open--;
+    }
+
+    /**
+     * Segment {@code i} as a ray: the packet's own, overwritten by the next call (for an
+     * {@link Intersectable#blockAll} of one's own, with {@link #end}).
+     *
+     * @param i the segment's index, below {@link #size}
+     * @return a ray from the segment's origin along its direction, as a single shadow ray would be set
+     */
+    public Ray segment(int i) {
+        return ray.set(ox[i], oy[i], oz[i], vx[i], vy[i], vz[i]);
+    }
+
+    /**
+     * Where segment {@code i} ends along its ray.
+     *
+     * @param i the segment's index, below {@link #size}
+     * @return the end of the segment's interval {@code (0, end)}
+     */
+    public double end(int i) {
+        return tMax[i];
     }
 
     /**
@@ -112,9 +150,7 @@ public final class ShadowPacket {
      */
     void blockEach(Intersectable object, HitRecord scratch) {
         for (int i = 0; i < size; i++) {
-            if (blocked[i]) continue;
-            ray.set(ox[i], oy[i], oz[i], vx[i], vy[i], vz[i]);
-            if (object.occludes(ray, 0, tMax[i], scratch)) blocked[i] = true;
+            if (!blocked[i] && object.occludes(segment(i), 0, tMax[i], scratch)) block(i);
         }
     }
 }

@@ -66,12 +66,12 @@ final class ShadowQueries {
         long tests = 0;
         for (Intersectable surface : unbounded) {
             if (surface == scratch.leaving) continue;
-            tests += packet.open();
+            tests += packet.open;
             surface.blockAll(packet, scratch);
         }
         for (int k = 0; k < boundedCount; k++) {
             if (leftBy(k, scratch)) continue;
-            tests += packet.open();
+            tests += packet.open;
             objects[k].blockAll(packet, scratch);
         }
         scratch.primitiveTests += tests;

@@ -122,7 +122,10 @@ public class Sphere extends Geometry {
         double[] ox = packet.ox, oy = packet.oy, oz = packet.oz, dx = packet.dx, dy = packet.dy, dz = packet.dz;
         double[] tMax = packet.tMax;
         for (int i = 0, n = packet.size; i < n; i++) {
-            if (!blocked[i]) blocked[i] = hitDistance(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], 0, tMax[i]) > 0;
+            if (!blocked[i] && hitDistance(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], 0, tMax[i]) > 0) {
+                blocked[i] = true;
+                packet.open--;
+            }
         }
     }
 

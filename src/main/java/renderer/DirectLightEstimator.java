@@ -290,7 +290,7 @@ final class DirectLightEstimator {
         }
         ctx.counters.shadow += packet.size();
         accelerator.blockShadowPacket(packet, ctx.shadowHit);
-        for (int i = 0, n = packet.size(); i < n; i++) if (!packet.blocked(i)) passed++;
+        passed += packet.open();
         ctx.diskUniform = passed == 0 || passed == count;
         double visible = passed == count ? 1 : passed / (double) count;
         ctx.visibleR = ctx.visibleG = ctx.visibleB = visible;

@@ -95,6 +95,9 @@ class ShadowPacketTest {
             }
             brute.blockShadowPacket(packet, scratch);
             assertEquals(n, packet.size());
+            int open = 0;
+            for (int i = 0; i < n; i++) if (!packet.blocked(i)) open++;
+            assertEquals(open, packet.open(), "the count of open segments");
             for (int i = 0; i < n; i++) {
                 Ray ray = new Ray(from, new Vector(segment[i][0], segment[i][1], segment[i][2]));
                 single.occluderHint = -1;
@@ -134,6 +137,70 @@ class ShadowPacketTest {
                 assertEquals(!flat.passesLight(new Ray(on, d[i]), 0, 3, single), packet.blocked(i));
             }
         }
+    }
+
+    /** A primitive of a user's own with a packet loop through the public API: a slab {@code z in (1, 2)}. */
+    private static final class Slab extends Geometry {
+        @Override
+        public Vector getNormal(Point point) {
+            return Vector.AXIS_Z;
+        }
+
+        @Override
+        public void completeHit(Ray ray, HitRecord hit) {
+            throw new UnsupportedOperationException("only shadow queries here");
+        }
+
+        @Override
+        public BoundingBox getBoundingBox() {
+            return new BoundingBox(-100, -100, 1, 100, 100, 2);
+        }
+
+        @Override
+        public boolean intersect(Ray ray, double tMin, double tMax, HitRecord hit) {
+            double t = (1.5 - ray.oz()) / ray.dz(); // the slab's mid-plane: any t crossing it is inside
+            if (!(t > tMin && t < tMax)) return false;
+            hit.t = t;
+            hit.geometry = this;
+            return true;
+        }
+
+        @Override
+        public void blockAll(ShadowPacket packet, HitRecord scratch) {
+            for (int i = 0; i < packet.size(); i++) {
+                if (!packet.blocked(i) && intersect(packet.segment(i), 0, packet.end(i), scratch)) {
+                    packet.block(i);
+                    packet.block(i); // twice: still one segment fewer open
+                }
+            }
+        }
+    }
+
+    @Test
+    void aPrimitiveOfOnesOwnMarksSegmentsThroughThePublicApi() {
+        Slab slab = new Slab();
+        Accelerator brute = Accelerator.build(new Geometries(slab, new Sphere(new Point(5, 5, 5), 1)), false);
+        assertTrue(brute.testsShadowPackets());
+        ShadowPacket packet = new ShadowPacket();
+        Random random = new Random(77);
+        double[][] d = new double[30][];
+        for (int i = 0; i < d.length; i++) {
+            d[i] = new double[] {
+                random.nextGaussian(), random.nextGaussian(), random.nextGaussian(), 1 + 3 * random.nextDouble()
+            };
+            packet.add(0, 0, 0, d[i][0], d[i][1], d[i][2], d[i][3]);
+        }
+        HitRecord scratch = new HitRecord(), single = new HitRecord();
+        brute.blockShadowPacket(packet, scratch);
+        int open = 0;
+        for (int i = 0; i < d.length; i++) {
+            boolean passes =
+                    brute.passesLight(new Ray(Point.ZERO, new Vector(d[i][0], d[i][1], d[i][2])), 0, d[i][3], single);
+            assertEquals(!passes, packet.blocked(i), "segment " + i);
+            if (passes) open++;
+        }
+        assertEquals(open, packet.open());
+        assertTrue(open > 0 && open < d.length, open + " of " + d.length + " open");
     }
 
     @Test
