@@ -7,6 +7,7 @@ import geometries.Meshes;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
+import java.util.function.Predicate;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.PointLight;
@@ -27,18 +28,44 @@ class BvhRenderEqualityTest {
     void bvhAndBruteForceRenderIdenticalImages() {
         ImageWriter withBvh = render(true, 2);
         ImageWriter bruteForce = render(false, 1);
-        int lit = 0;
-        for (int y = 0; y < withBvh.getNy(); y++) {
-            for (int x = 0; x < withBvh.getNx(); x++) {
-                Color a = withBvh.getPixel(x, y), b = bruteForce.getPixel(x, y);
-                String where = "pixel (" + x + ", " + y + ")";
-                assertEquals(Double.doubleToLongBits(b.getR()), Double.doubleToLongBits(a.getR()), where);
-                assertEquals(Double.doubleToLongBits(b.getG()), Double.doubleToLongBits(a.getG()), where);
-                assertEquals(Double.doubleToLongBits(b.getB()), Double.doubleToLongBits(a.getB()), where);
-                if (a.getR() + a.getG() + a.getB() > 0) lit++;
+        assertIdentical(bruteForce, withBvh, "");
+        int lit = count(withBvh, c -> c.getR() + c.getG() + c.getB() > 0);
+        assertTrue(lit > withBvh.getNx() * withBvh.getNy() / 2, "the image shows the scene, not just black");
+    }
+
+    /** Asserts the two images' pixels equal bit for bit. */
+    private static void assertIdentical(ImageWriter expected, ImageWriter actual, String context) {
+        for (int y = 0; y < expected.getNy(); y++) {
+            for (int x = 0; x < expected.getNx(); x++) {
+                Color e = expected.getPixel(x, y), a = actual.getPixel(x, y);
+                String where = "pixel (" + x + ", " + y + ")" + context;
+                assertEquals(Double.doubleToLongBits(e.getR()), Double.doubleToLongBits(a.getR()), where);
+                assertEquals(Double.doubleToLongBits(e.getG()), Double.doubleToLongBits(a.getG()), where);
+                assertEquals(Double.doubleToLongBits(e.getB()), Double.doubleToLongBits(a.getB()), where);
             }
         }
-        assertTrue(lit > withBvh.getNx() * withBvh.getNy() / 2, "the image shows the scene, not just black");
+    }
+
+    private static int count(ImageWriter image, Predicate<Color> which) {
+        int n = 0;
+        for (int y = 0; y < image.getNy(); y++) {
+            for (int x = 0; x < image.getNx(); x++) if (which.test(image.getPixel(x, y))) n++;
+        }
+        return n;
+    }
+
+    /** A pinhole camera of this test's scenes, for the BVH on or off. */
+    private static Camera camera(
+            Scene scene, Point from, Point to, double width, double height, int nX, int nY, boolean useBvh) {
+        return Camera.getBuilder()
+                .setLocation(from)
+                .setDirection(to, Vector.AXIS_Z)
+                .setVpDistance(1)
+                .setVpSize(width, height)
+                .setResolution(nX, nY)
+                .setRayTracer(scene, RayTracerType.SIMPLE)
+                .setBvh(useBvh)
+                .build();
     }
 
     /**
@@ -50,17 +77,8 @@ class BvhRenderEqualityTest {
     void shadowPacketsRenderAsSingleShadowRaysDo() {
         for (ProgressiveSettings progressive : new ProgressiveSettings[] {null, ProgressiveSettings.targetError(3)}) {
             ImageWriter tree = renderSpheres(true, progressive), packets = renderSpheres(false, progressive);
-            int penumbra = 0;
-            for (int y = 0; y < tree.getNy(); y++) {
-                for (int x = 0; x < tree.getNx(); x++) {
-                    Color a = tree.getPixel(x, y), b = packets.getPixel(x, y);
-                    String where = "pixel (" + x + ", " + y + "), progressive " + progressive;
-                    assertEquals(Double.doubleToLongBits(a.getR()), Double.doubleToLongBits(b.getR()), where);
-                    assertEquals(Double.doubleToLongBits(a.getG()), Double.doubleToLongBits(b.getG()), where);
-                    assertEquals(Double.doubleToLongBits(a.getB()), Double.doubleToLongBits(b.getB()), where);
-                    if (a.getR() > 40 && a.getR() < 120) penumbra++;
-                }
-            }
+            assertIdentical(tree, packets, ", progressive " + progressive);
+            int penumbra = count(tree, c -> c.getR() > 40 && c.getR() < 120);
             assertTrue(penumbra > 20, "the image has soft shadows to compare: " + penumbra + " mid-tone pixels");
         }
     }
@@ -75,16 +93,8 @@ class BvhRenderEqualityTest {
         scene.lights.add(new PointLight(new Color(255, 255, 255), new Point(0.5, -0.5, 3))
                 .setRadius(0.4)
                 .setNumSamples(2));
-        Camera camera = Camera.getBuilder()
-                .setLocation(new Point(0, -4, 3))
-                .setDirection(new Point(0, 0, 0.3), Vector.AXIS_Z)
-                .setVpDistance(1)
-                .setVpSize(1.2, 0.9)
-                .setResolution(40, 30)
-                .setRayTracer(scene, RayTracerType.SIMPLE)
-                .setBvh(useBvh)
-                .setThreads(useBvh ? 2 : 1)
-                .build();
+        Camera camera = camera(scene, new Point(0, -4, 3), new Point(0, 0, 0.3), 1.2, 0.9, 40, 30, useBvh)
+                .setThreads(useBvh ? 2 : 1);
         if (progressive != null) camera.setProgressive(progressive);
         camera.renderImage();
         return camera.getImage();
@@ -122,16 +132,8 @@ class BvhRenderEqualityTest {
                 .setRadius(0.3)
                 .setNumSamples(4));
         scene.lights.add(new DirectionalLight(new Color(60, 60, 80), new Vector(0.3, 1, -1)));
-        Camera camera = Camera.getBuilder()
-                .setLocation(new Point(0, -4, 2.5))
-                .setDirection(new Point(0, 0, 0), Vector.AXIS_Z)
-                .setVpDistance(1)
-                .setVpSize(1.2, 0.75)
-                .setResolution(48, 30)
-                .setRayTracer(scene, RayTracerType.SIMPLE)
-                .setBvh(useBvh)
-                .setThreads(threads)
-                .build();
+        Camera camera = camera(scene, new Point(0, -4, 2.5), new Point(0, 0, 0), 1.2, 0.75, 48, 30, useBvh)
+                .setThreads(threads);
         camera.renderImage();
         return camera.getImage();
     }
