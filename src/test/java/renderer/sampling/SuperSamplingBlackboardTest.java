@@ -242,4 +242,33 @@ class SuperSamplingBlackboardTest {
                 () -> SuperSamplingBlackboard.getSampleOffsets(
                         4, TargetShape.RECTANGLE, SamplingPattern.GRID, new SampleStream(0), new double[6]));
     }
+
+    static Stream<Arguments> probeCountsAndSeeds() {
+        List<Arguments> cases = new ArrayList<>();
+        for (int count : new int[] {2, 3, 5, 9, 17, 33, 65, 66, 100}) {
+            for (long seed = 1; seed <= 20; seed++) cases.add(Arguments.of(count, seed));
+        }
+        return cases.stream();
+    }
+
+    /**
+     * The probe ring (the centre, then {@code count - 1} rim points turned by one random angle) against the textbook's
+     * {@code 0.5 (cos, sin)(rotation + 2 pi (i - 1) / (count - 1))}, within 2e-15, what rounding the textbook's own
+     * angle (up to 4 pi, whose ulp is 1.8e-15) allows: the rim's points are turned from a table of the unrotated ring,
+     * not computed one by one (above 64 rim points they still are).
+     */
+    @ParameterizedTest(name = "{0} probes, seed {1}")
+    @MethodSource("probeCountsAndSeeds")
+    void probeRingIsTheTextbooksRotatedRing(int count, long seed) {
+        double[] out = new double[2 * count];
+        SuperSamplingBlackboard.getProbeOffsets(count, new SampleStream(seed), out);
+        double rotation = 2 * Math.PI * new SampleStream(seed).nextDouble();
+        assertEquals(0.0, out[0]);
+        assertEquals(0.0, out[1]);
+        for (int i = 1; i < count; i++) {
+            double angle = rotation + 2 * Math.PI * (i - 1) / (count - 1);
+            assertEquals(0.5 * Math.cos(angle), out[2 * i], 2e-15, "x of probe " + i);
+            assertEquals(0.5 * Math.sin(angle), out[2 * i + 1], 2e-15, "y of probe " + i);
+        }
+    }
 }
