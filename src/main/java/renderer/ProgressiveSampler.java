@@ -284,15 +284,19 @@ final class ProgressiveSampler {
         long toFloor = 0;
         for (int d : done) toFloor += 2L * Math.max(0, floor - d);
         if (toFloor > 0) {
-            // Not every pixel has the minimum yet: raise the lowest first, as far as the budget goes.
+            // Not every pixel has the minimum yet: raise the lowest first, as far as the budget goes, and by one
+            // sample per half at least: the pass stops at the budget's end (BudgetDeadline), and the time per
+            // sample measured so far may be the JIT's (a command line's first pass ran 20x slower than the next).
+            int lowest = Integer.MAX_VALUE;
+            for (int d : done) lowest = Math.min(lowest, d);
             int level = floor;
-            while (level > 1 && cost(level) > budget) level--;
+            while (level > lowest + 1 && cost(level) > budget) level--;
             long planned = 0;
             for (int p = 0; p < done.length; p++) {
                 goal[p] = Math.max(done[p], level);
                 planned += 2L * (goal[p] - done[p]);
             }
-            return planned; // 0 when not even the lowest pixels can be raised in time: the render ends
+            return planned;
         }
         double[] weight = weights(neighbourhoods.largest(sampleVariances(), weightScratch));
         double lo = 0, hi = 1;

@@ -1,0 +1,47 @@
+package renderer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import org.junit.jupiter.api.Test;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.TargetShape;
+
+/**
+ * A time budget's plan toward the minimum samples, with samples over the pixel's area (minimum 16): as far as the
+ * budget goes, and by one sample per half at least even when the budget, counted in samples at the time per sample
+ * measured so far, cannot pay for that. The pass then stops at the budget's end; the time per sample measured over a
+ * command line's first pass is the JIT's, many times the next pass's, and the render used to end there with most of
+ * its budget left.
+ */
+class BudgetPlanTest {
+    private static final int NX = 8, NY = 6;
+
+    /** A sampler after its first pass: every pixel holds 2 samples per half. */
+    private static ProgressiveSampler afterFirstPass() {
+        Camera camera = FeatureScenes.shadowCamera(FeatureScenes.shadowScene(FeatureScenes.shadowLight(), null), NX)
+                .setResolution(NX, NY)
+                .build()
+                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.HALTON));
+        camera.renderImage(); // prepares the tracer
+        ProgressiveSampler sampler =
+                new ProgressiveSampler(new PixelSampler(camera), ProgressiveSettings.timeBudget(10), NX, NY);
+        TraceContext ctx = new TraceContext();
+        for (int y = 0; y < NY; y++) for (int x = 0; x < NX; x++) sampler.advance(x, y, ctx);
+        assertEquals(4L * NX * NY, sampler.samples(), "the first pass of a budget: 4 samples per pixel");
+        return sampler;
+    }
+
+    @Test
+    void aBudgetShortOfAWholeStepStillRaisesEveryPixelByOneSamplePerHalf() {
+        assertEquals(2L * NX * NY, afterFirstPass().planForSamples(1));
+    }
+
+    @Test
+    void aBudgetThatPaysForSeveralStepsTakesThemAll() {
+        // To 5 samples per half: 3 more per half, 6 per pixel, which a budget of 6 per pixel pays for, not more.
+        assertEquals(6L * NX * NY, afterFirstPass().planForSamples(6L * NX * NY));
+        // The minimum (16, 8 per half) caps the steps however large the budget.
+        assertEquals(12L * NX * NY, afterFirstPass().planForSamples(1_000_000));
+    }
+}
