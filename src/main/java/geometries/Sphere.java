@@ -122,10 +122,7 @@ public class Sphere extends Geometry {
         double[] ox = packet.ox, oy = packet.oy, oz = packet.oz, dx = packet.dx, dy = packet.dy, dz = packet.dz;
         double[] tMax = packet.tMax;
         for (int i = 0, n = packet.size; i < n; i++) {
-            if (!blocked[i] && hitDistance(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], 0, tMax[i]) > 0) {
-                blocked[i] = true;
-                packet.open--;
-            }
+            if (!blocked[i] && hitDistance(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], 0, tMax[i]) > 0) packet.block(i);
         }
     }
 

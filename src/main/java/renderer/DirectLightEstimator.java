@@ -146,9 +146,14 @@ final class DirectLightEstimator {
         ctx.setColor(r, g, b);
     }
 
+    /** Whether a light's shadow is one ray per shading point: a directional light, or a point without a disk. */
+    static boolean castsOneShadowRay(LightSource light) {
+        return light.getPosition() == null || !light.isSoft();
+    }
+
     /** The fewest shadow rays a light costs per shading point: one, a disk's count, or its adaptive probes. */
     private int shadowRaysOf(LightSource light) {
-        if (light.getPosition() == null || !light.isSoft()) return 1;
+        if (castsOneShadowRay(light)) return 1;
         int count = light.getNumSamples();
         return settings.adaptiveShadows() ? Math.min(count, probeCount(count)) : count;
     }
@@ -269,23 +274,17 @@ final class DirectLightEstimator {
             SurfacePoint sp, Point c, double diameter, int count, double[] offsets, TraceContext ctx) {
         ShadowPacket packet = ctx.shadowPacket;
         packet.clear();
-        int passed = 0; // rays toward a disk point on the shading point itself: lit, as shadowTo says
+        int passed = 0; // segments with nothing to trace: lit, as in shadowTo
         for (int i = 0; i < count; i++) {
             double a = offsets[2 * i] * diameter, bb = offsets[2 * i + 1] * diameter;
             double qx = c.x + a * sp.e1x + bb * sp.e2x;
             double qy = c.y + a * sp.e1y + bb * sp.e2y;
             double qz = c.z + a * sp.e1z + bb * sp.e2z;
-            double dx = qx - sp.px, dy = qy - sp.py, dz = qz - sp.pz;
-            if (dx == 0 && dy == 0 && dz == 0) {
+            if (!aim(sp, qx, qy, qz)) {
                 passed++;
                 continue;
             }
-            sp.spawn(dx, dy, dz);
             double ox = qx - sp.originX, oy = qy - sp.originY, oz = qz - sp.originZ;
-            if (ox == 0 && oy == 0 && oz == 0) {
-                passed++;
-                continue;
-            }
             packet.add(sp.originX, sp.originY, sp.originZ, ox, oy, oz, Vector.length(ox, oy, oz));
         }
         ctx.counters.shadow += packet.size();
@@ -303,19 +302,26 @@ final class DirectLightEstimator {
 
     /** Transmittance of the segment from the surface to the point (x, y, z), into {@code ctx.visibleR, G, B}. */
     private void shadowTo(SurfacePoint sp, double x, double y, double z, int li, int[] occluders, TraceContext ctx) {
-        double dx = x - sp.px, dy = y - sp.py, dz = z - sp.pz;
-        if (dx == 0 && dy == 0 && dz == 0) {
+        if (!aim(sp, x, y, z)) {
             ctx.visibleR = ctx.visibleG = ctx.visibleB = 1;
             return;
         }
-        sp.spawn(dx, dy, dz);
         double ox = x - sp.originX, oy = y - sp.originY, oz = z - sp.originZ;
-        if (ox == 0 && oy == 0 && oz == 0) {
-            ctx.visibleR = ctx.visibleG = ctx.visibleB = 1;
-            return;
-        }
         ReusableRay ray = ctx.shadowRay.set(sp.originX, sp.originY, sp.originZ, ox, oy, oz);
         traceShadow(ray, Vector.length(ox, oy, oz), li, occluders, ctx);
+    }
+
+    /**
+     * Sets the origin of a shadow segment from the surface point toward (x, y, z), offset off the surface, into
+     * {@code sp.originX, Y, Z}; false when there is no segment to trace (the point is the surface point, or its offset
+     * origin), which counts as lit.
+     */
+    private static boolean aim(SurfacePoint sp, double x, double y, double z) {
+        double dx = x - sp.px, dy = y - sp.py, dz = z - sp.pz;
+        if (dx == 0 && dy == 0 && dz == 0) return false;
+        sp.spawn(dx, dy, dz);
+        double ox = x - sp.originX, oy = y - sp.originY, oz = z - sp.originZ;
+        return !(ox == 0 && oy == 0 && oz == 0);
     }
 
     /** Transmittance along a direction up to {@code tMax} (directional lights). */

@@ -71,7 +71,7 @@ public class SimpleRayTracer extends RayTracerBase {
         this.plan = EffectPlan.of(scene, settings);
         this.directLight = new DirectLightEstimator(lights, plan, settings, accelerator);
         directRepeats = true;
-        for (LightSource light : lights) directRepeats &= light.getPosition() == null || !light.isSoft();
+        for (LightSource light : lights) directRepeats &= DirectLightEstimator.castsOneShadowRay(light);
         this.minAttenuation = settings.minAttenuation();
         Color ambient = scene.ambientLight.getIntensity();
         ambientR = ambient.getR();
