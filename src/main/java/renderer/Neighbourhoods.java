@@ -1,39 +1,41 @@
 package renderer;
 
+import java.util.Arrays;
+
 /**
  * The 3 x 3 neighbourhood filters of the progressive planning, over per-pixel values of an image in row order: the
  * largest and the mean of each pixel's neighbourhood (clipped at the image's edges). Neighbours see much the same
  * noise, and an edge that one pixel's samples all missed is often seen by a neighbour's.
  *
  * <p>The values are sample variances: zero or positive (or NaN, which both filters pass on). Where most of an image
- * has converged (a soft shadow's lit ground and umbra), most neighbourhoods hold only zeros, and the mean skips them
- * by the largest: the planning filters the whole image twice per pass.
+ * has converged (a soft shadow's lit ground and umbra), most neighbourhoods hold only zeros: the largest is raised
+ * only around the values that are not 0, and the mean skips the neighbourhoods whose largest is 0.
  */
 final class Neighbourhoods {
     private final int nX, nY;
-    /** Per column of the current row, the largest value of the rows around it. */
-    private final double[] columnLargest;
 
     Neighbourhoods(int nX, int nY) {
         this.nX = nX;
         this.nY = nY;
-        columnLargest = new double[nX];
     }
 
     /**
-     * Per pixel, the largest of {@code values} over its neighbourhood and 0, into {@code out}: the rows' largest per
-     * column, then across three columns (the maximum does not depend on the order it is taken in).
+     * Per pixel, the largest of {@code values} over its neighbourhood and 0, into {@code out}: each value that is not
+     * 0 raises the nine pixels around it (the maximum does not depend on the order it is taken in). A converging
+     * image is mostly zeros, so this touches a few pixels of it, where filtering rows and columns touched all of them
+     * twice: a command line's first plan ran that interpreted, 11-13 ms of a 0.25 s render of the POV-Ray scene.
      */
     double[] largest(double[] values, double[] out) {
-        double[] column = columnLargest;
+        Arrays.fill(out, 0, nX * nY, 0);
         for (int y = 0; y < nY; y++) {
-            int above = Math.max(0, y - 1) * nX, below = Math.min(nY - 1, y + 1) * nX, row = y * nX;
-            for (int x = 0; x < nX; x++) {
-                column[x] = Math.max(Math.max(Math.max(0, values[above + x]), values[row + x]), values[below + x]);
-            }
-            for (int x = 0; x < nX; x++) {
-                double left = column[Math.max(0, x - 1)], right = column[Math.min(nX - 1, x + 1)];
-                out[row + x] = Math.max(Math.max(left, column[x]), right);
+            int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
+            for (int x = 0, row = y * nX; x < nX; x++) {
+                double v = values[row + x];
+                if (v == 0) continue; // raises nothing above 0; a NaN is not 0 and is passed on
+                int i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
+                for (int j = j0; j <= j1; j++) {
+                    for (int q = j * nX + i0, end = j * nX + i1; q <= end; q++) out[q] = Math.max(out[q], v);
+                }
             }
         }
         return out;

@@ -34,14 +34,15 @@ final class ProgressiveSampler {
 
     private int passes;
     /**
-     * Per-pixel arrays of the planning, reused from pass to pass: the means and weights are filled anew by each plan,
-     * the variances only where a pixel took samples since ({@link #varianceAt}).
+     * Per pixel, the variance of one sample: its error estimate times its samples, set by the render thread that
+     * advanced the pixel, where the samples land. (Computed by the plan, it was a whole-image loop that a command
+     * line's first plan ran interpreted: 7-9 ms of a 0.25 s render of the POV-Ray scene.)
      */
-    private final double[] varianceScratch, meanScratch, weightScratch;
+    private final double[] variance;
+    /** Per-pixel arrays of the planning, reused from pass to pass and filled anew by each plan. */
+    private final double[] meanScratch, weightScratch;
     /** The 3 x 3 filters the planning applies to the variances. */
     private final Neighbourhoods neighbourhoods;
-    /** Per pixel, the samples per half its entry in {@code varianceScratch} was computed for (-1: never). */
-    private final int[] varianceAt;
     /** The last predicted image MSE, and the samples taken when it was predicted (-1: none yet). */
     private double predictedMse;
 
@@ -65,9 +66,7 @@ final class ProgressiveSampler {
         sums = new double[6 * n];
         done = new int[n];
         goal = new int[n];
-        varianceScratch = new double[n];
-        varianceAt = new int[n];
-        Arrays.fill(varianceAt, -1);
+        variance = new double[n];
         meanScratch = new double[n];
         weightScratch = new double[n];
         neighbourhoods = new Neighbourhoods(nX, nY);
@@ -146,6 +145,7 @@ final class ProgressiveSampler {
             for (; i < to; i++) add(p, half, x, y, i, true, ctx);
         }
         done[p] = Math.max(done[p], goal[p]);
+        variance[p] = errorSquared(p) * 2.0 * done[p];
     }
 
     /** Takes sample {@code index} of half {@code half} of pixel p = (x, y) and adds it to the half's sums. */
@@ -193,7 +193,6 @@ final class ProgressiveSampler {
      */
     double predictedError() {
         if (samples() != samplesPredicted) {
-            double[] variance = sampleVariances();
             pixelMse(variance, neighbourhoods.largest(variance, weightScratch));
         }
         return Math.sqrt(predictedMse);
@@ -236,7 +235,6 @@ final class ProgressiveSampler {
      * samples planned (0 when the target is met or no pixel may take more).
      */
     long planForError(double target) {
-        double[] variance = sampleVariances();
         double[] largest = neighbourhoods.largest(variance, weightScratch);
         // Also kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
         double[] mse = pixelMse(variance, largest);
@@ -298,7 +296,7 @@ final class ProgressiveSampler {
             }
             return planned;
         }
-        double[] weight = weights(neighbourhoods.largest(sampleVariances(), weightScratch));
+        double[] weight = weights(neighbourhoods.largest(variance, weightScratch));
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
         while (hi - lo > 1e-3 * hi) {
@@ -331,21 +329,6 @@ final class ProgressiveSampler {
         mean /= weight.length;
         for (int p = 0; p < weight.length; p++) weight[p] += 0.05 * mean;
         return weight;
-    }
-
-    /**
-     * The variance of one sample of each pixel, its error estimate times its samples, into a reused array: computed
-     * again only for the pixels that took samples since it was last computed (the POV-Ray comparison scene, 40
-     * renders alternated in one JVM, each order, two runs: 0.967-0.989x the time, the same image).
-     */
-    private double[] sampleVariances() {
-        double[] v = varianceScratch;
-        for (int p = 0; p < v.length; p++) {
-            if (varianceAt[p] == done[p]) continue;
-            v[p] = errorSquared(p) * 2.0 * done[p];
-            varianceAt[p] = done[p];
-        }
-        return v;
     }
 
     /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
