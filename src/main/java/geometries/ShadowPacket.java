@@ -2,6 +2,7 @@ package geometries;
 
 import primitives.Ray;
 import primitives.ReusableRay;
+import primitives.Vector;
 
 /**
  * Shadow segments tested together, each primitive against all of them in turn rather than each segment against all
@@ -67,15 +68,26 @@ public final class ShadowPacket {
      * @throws IllegalArgumentException as {@link ReusableRay#set} for an origin or direction it refuses
      */
     public void add(double ox, double oy, double oz, double vx, double vy, double vz, double tMax) {
-        ray.set(ox, oy, oz, vx, vy, vz); // validates, and normalizes exactly as a single shadow ray would
         if (size == blocked.length) allocate(2 * size);
-        int i = size++;
+        int i = size;
+        // Normalized exactly as a single shadow ray would be (Ray's arithmetic). A factor above 0 means a finite,
+        // non-zero direction of ordinary magnitude, the usual case; otherwise, or for an origin that may not be
+        // finite, the ray validates (and throws) and normalizes the rare direction.
+        double f = Vector.unitFactor(vx, vy, vz);
+        if (f > 0 && Double.isFinite(ox + oy + oz)) {
+            dx[i] = vx * f;
+            dy[i] = vy * f;
+            dz[i] = vz * f;
+        } else {
+            ray.set(ox, oy, oz, vx, vy, vz);
+            dx[i] = ray.dx();
+            dy[i] = ray.dy();
+            dz[i] = ray.dz();
+        }
+        size++;
         this.ox[i] = ox;
         this.oy[i] = oy;
         this.oz[i] = oz;
-        dx[i] = ray.dx();
-        dy[i] = ray.dy();
-        dz[i] = ray.dz();
         this.tMax[i] = tMax;
         this.vx[i] = vx;
         this.vy[i] = vy;

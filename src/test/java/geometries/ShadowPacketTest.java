@@ -15,6 +15,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
+import primitives.ReusableRay;
 import primitives.Vector;
 
 /**
@@ -224,6 +225,43 @@ class ShadowPacketTest {
         ShadowPacket packet = new ShadowPacket();
         assertThrows(IllegalArgumentException.class, () -> packet.add(0, 0, 0, 0, 0, 0, 1));
         assertThrows(IllegalArgumentException.class, () -> packet.add(Double.NaN, 0, 0, 1, 0, 0, 1));
+        assertThrows(IllegalArgumentException.class, () -> packet.add(0, 0, 0, 1, Double.POSITIVE_INFINITY, 0, 1));
         assertEquals(0, packet.size());
+        // Finite coordinates whose sum overflows are an origin like any other.
+        packet.add(Double.MAX_VALUE, Double.MAX_VALUE, 0, 1, 0, 0, 1);
+        assertEquals(1, packet.size());
+    }
+
+    /**
+     * A packet keeps each segment's unit direction as a single shadow ray computes it, bit for bit: ordinary
+     * directions by the ray's factor, and the rare ones (tiny, huge, along an axis, signed zeros) as the ray
+     * normalizes them.
+     */
+    @ParameterizedTest
+    @MethodSource("seeds")
+    void aPacketNormalizesEveryDirectionAsASingleRay(long seed) {
+        Random random = new Random(seed);
+        ShadowPacket packet = new ShadowPacket();
+        ReusableRay single = new ReusableRay();
+        double[] scales = {1, 1e-3, 1e3, 0x1p-520, 0x1p-499, 0x1p499, 0x1p520, Double.MIN_VALUE, 1e300};
+        for (int i = 0; i < 400; i++) {
+            double scale = scales[random.nextInt(scales.length)];
+            double vx = random.nextGaussian() * scale, vy = random.nextGaussian() * scale;
+            double vz = random.nextGaussian() * scale;
+            switch (random.nextInt(6)) {
+                case 0 -> vx = vy = 0;
+                case 1 -> vy = -0.0;
+                case 2 -> vz = 0;
+                default -> {}
+            }
+            if (vx == 0 && vy == 0 && vz == 0) vz = -scale;
+            packet.clear();
+            packet.add(1e6 * random.nextGaussian(), random.nextGaussian(), 0, vx, vy, vz, 1);
+            single.set(0, 0, 0, vx, vy, vz);
+            String what = "(" + vx + ", " + vy + ", " + vz + ")";
+            assertEquals(Double.doubleToRawLongBits(single.dx()), Double.doubleToRawLongBits(packet.dx[0]), what);
+            assertEquals(Double.doubleToRawLongBits(single.dy()), Double.doubleToRawLongBits(packet.dy[0]), what);
+            assertEquals(Double.doubleToRawLongBits(single.dz()), Double.doubleToRawLongBits(packet.dz[0]), what);
+        }
     }
 }
