@@ -185,10 +185,12 @@ final class PixelSampler {
             long pixelSeed = SampleStream.mix(seed, pixel);
             ctx.progressivePixel = pixel;
             ctx.progressivePixelSeed = pixelSeed;
+            boolean area = samplesArea();
             for (int h = 0; h < 2; h++) {
                 long halfSeed = SampleStream.mix(pixelSeed, PROGRESSIVE_SHIFT + h);
-                SampleStream shift = ctx.random.reset(halfSeed);
                 ctx.halfSeeds[h] = halfSeed;
+                if (!area) continue; // the shifts place samples over the area; through the centre they are not used
+                SampleStream shift = ctx.random.reset(halfSeed);
                 ctx.halfShifts[2 * h] = shift.nextDouble();
                 ctx.halfShifts[2 * h + 1] = shift.nextDouble();
             }
