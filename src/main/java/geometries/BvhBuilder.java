@@ -6,6 +6,7 @@ import java.util.Arrays;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.ForkJoinWorkerThread;
+import java.util.concurrent.TimeUnit;
 
 /**
  * The build of a {@link BVH}'s binary tree, each node decided by a {@link SahSplitter} (binned SAH); nodes are
@@ -90,11 +91,38 @@ final class BvhBuilder {
         return new Split(box, 0, left, right);
     }
 
-    /** The build's own fork/join pool, one worker per core: the common pool leaves a core to a caller that waits. */
+    /**
+     * The build's own fork/join pool, one worker per core: the common pool leaves a core to a caller that waits. Idle
+     * workers end after {@link #IDLE_SECONDS} s (the JDK's default is 60 s): a host that waits for a program's threads
+     * before it goes on waited for them ({@code mvn exec:java} gave them 15 s after every render, README's main job
+     * included).
+     */
     private static volatile ForkJoinPool pool;
 
+    static final int IDLE_SECONDS = 1;
+
+    /** The pool's live worker threads (0 before the first parallel build and once idle workers have ended). */
+    static int poolThreads() {
+        ForkJoinPool p = pool;
+        return p == null ? 0 : p.getPoolSize();
+    }
+
     private static synchronized ForkJoinPool pool() {
-        if (pool == null) pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        if (pool == null) {
+            // The JDK's defaults but the keep-alive (up to 32,767 threads: a worker that waits on a join may be
+            // replaced by a spare).
+            pool = new ForkJoinPool(
+                    Runtime.getRuntime().availableProcessors(),
+                    ForkJoinPool.defaultForkJoinWorkerThreadFactory,
+                    null,
+                    false,
+                    0,
+                    0x7fff,
+                    1,
+                    null,
+                    IDLE_SECONDS,
+                    TimeUnit.SECONDS);
+        }
         return pool;
     }
 

@@ -135,6 +135,27 @@ class BVHTest {
     }
 
     /**
+     * The parallel build's workers end soon after it (the JDK's default keeps idle workers for 60 s, and a host that
+     * waits for a program's threads, such as {@code mvn exec:java}, waited 15 s after every render for them).
+     */
+    @Test
+    void theParallelBuildsWorkersEndWhenIdle() throws InterruptedException {
+        int n = 2 * BVH.PARALLEL_GRAIN;
+        double[] boxes = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            for (int a = 0; a < 3; a++) {
+                boxes[6 * p + a] = p % (a + 7);
+                boxes[6 * p + 3 + a] = p % (a + 7) + 0.5;
+            }
+        }
+        BVH.build(boxes, 16, 4, true);
+        assertTrue(BvhBuilder.poolThreads() > 0 || Runtime.getRuntime().availableProcessors() == 1);
+        long deadline = System.nanoTime() + (BvhBuilder.IDLE_SECONDS + 9) * 1_000_000_000L;
+        while (BvhBuilder.poolThreads() > 0 && System.nanoTime() < deadline) Thread.sleep(50);
+        assertEquals(0, BvhBuilder.poolThreads(), "workers still alive 10 s after the build");
+    }
+
+    /**
      * A second group of primitives (the clear surfaces of Accelerator's shadow queries) gets root slots of its own:
      * the primitives under the slots {@code secondGroupSlots} names are exactly the group, the parallel build gives
      * the sequential tree, and an empty or full group builds the plain tree.
