@@ -3,10 +3,7 @@ package geometries;
 import static geometries.SahSplitter.SUMMARY;
 
 import java.util.Arrays;
-import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
-import java.util.concurrent.ForkJoinWorkerThread;
-import java.util.concurrent.TimeUnit;
 
 /**
  * The build of a {@link BVH}'s binary tree, each node decided by a {@link SahSplitter} (binned SAH); nodes are
@@ -56,12 +53,12 @@ final class BvhBuilder {
             splitter.summarize(split, n, groups, SUMMARY);
             Object top;
             if (parallel) {
-                top = pool().invoke(ForkJoinTask.adapt(() -> {
+                top = BuildPool.invoke(() -> {
                     ForkJoinTask<Object> left = ForkJoinTask.adapt(() -> plan(0, split, 1, groups, 0))
                             .fork();
                     Object right = plan(split, n, 1, groups, SUMMARY);
                     return groupRoot(left.join(), right);
-                }));
+                });
             } else {
                 top = groupRoot(subtree(0, split, 1, groups, 0), subtree(split, n, 1, groups, SUMMARY));
             }
@@ -70,7 +67,7 @@ final class BvhBuilder {
             double[] root = new double[SUMMARY];
             splitter.summarize(0, n, root, 0);
             if (parallel && n >= 2 * BVH.PARALLEL_GRAIN) {
-                emitAll(pool().invoke(ForkJoinTask.adapt(() -> plan(0, n, 0, root, 0))));
+                emitAll(BuildPool.invoke(() -> plan(0, n, 0, root, 0)));
             } else {
                 allocate(2 * n - 1);
                 build(0, n, 0, root, 0);
@@ -89,41 +86,6 @@ final class BvhBuilder {
             box[3 + a] = Math.max(box[3 + a], other[3 + a]);
         }
         return new Split(box, 0, left, right);
-    }
-
-    /**
-     * The build's own fork/join pool, one worker per core: the common pool leaves a core to a caller that waits. Idle
-     * workers end after {@link #IDLE_SECONDS} s (the JDK's default is 60 s): a host that waits for a program's threads
-     * before it goes on waited for them ({@code mvn exec:java} gave them 15 s after every render, README's main job
-     * included).
-     */
-    private static volatile ForkJoinPool pool;
-
-    static final int IDLE_SECONDS = 1;
-
-    /** The pool's live worker threads (0 before the first parallel build and once idle workers have ended). */
-    static int poolThreads() {
-        ForkJoinPool p = pool;
-        return p == null ? 0 : p.getPoolSize();
-    }
-
-    private static synchronized ForkJoinPool pool() {
-        if (pool == null) {
-            // The JDK's defaults but the keep-alive (up to 32,767 threads: a worker that waits on a join may be
-            // replaced by a spare).
-            pool = new ForkJoinPool(
-                    Runtime.getRuntime().availableProcessors(),
-                    ForkJoinPool.defaultForkJoinWorkerThreadFactory,
-                    null,
-                    false,
-                    0,
-                    0x7fff,
-                    1,
-                    null,
-                    IDLE_SECONDS,
-                    TimeUnit.SECONDS);
-        }
-        return pool;
     }
 
     /**
@@ -189,7 +151,7 @@ final class BvhBuilder {
     }
 
     /**
-     * Each worker of {@link #pool} builds its subtrees in the same room and copies each out at its final size,
+     * Each worker of the {@link BuildPool} builds its subtrees in the same room and copies each out at its final size,
      * instead of allocating every subtree the 2n - 1 nodes it might need.
      */
     private static final ThreadLocal<Room> ROOM = ThreadLocal.withInitial(Room::new);
@@ -197,9 +159,7 @@ final class BvhBuilder {
     /** Builds {@code [start, end)} (summarized at {@code summary[at..]}) by a builder of its own. */
     private Subtree subtree(int start, int end, int depth, double[] summary, int at) {
         BvhBuilder builder = new BvhBuilder(primBounds, index, bins, maxLeafSize);
-        if (end - start <= BVH.PARALLEL_GRAIN
-                && Thread.currentThread() instanceof ForkJoinWorkerThread worker
-                && worker.getPool() == pool) {
+        if (end - start <= BVH.PARALLEL_GRAIN && BuildPool.isWorker()) {
             Room room = ROOM.get();
             builder.bounds = room.bounds();
             builder.data = room.data();

@@ -1,6 +1,5 @@
 package geometries;
 
-import java.util.stream.IntStream;
 import primitives.Double3;
 
 /**
@@ -73,8 +72,7 @@ final class CompiledPrimitives {
         clear = new boolean[n];
         int[] order = bvh == null ? null : bvh.order;
         // Each position is written from its own primitive alone, so large meshes lay out on all cores.
-        IntStream positions = IntStream.range(0, n);
-        (n >= PARALLEL_LAYOUT ? positions.parallel() : positions).forEach(k -> layOut(c, order, k));
+        BuildPool.forEach(n, n >= PARALLEL_LAYOUT, k -> layOut(c, order, k));
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];

@@ -5,7 +5,6 @@ import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.IntStream;
 
 /**
  * Gathers the primitives of a geometry tree for {@link Accelerator}: triangles of polygons (fans) and meshes into
@@ -151,8 +150,7 @@ final class PrimitiveCollector {
     double[] boxes() {
         double[] boxes = new double[6 * count];
         // Each box from its own primitive alone: a large mesh's on all cores.
-        IntStream positions = IntStream.range(0, count);
-        (count >= PARALLEL_BOXES ? positions.parallel() : positions).forEach(k -> box(k, boxes));
+        BuildPool.forEach(count, count >= PARALLEL_BOXES, k -> box(k, boxes));
         return boxes;
     }
 

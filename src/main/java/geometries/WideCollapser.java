@@ -7,8 +7,6 @@ import static geometries.BVH.MIN_X;
 import static geometries.BVH.NODE_STRIDE;
 import static geometries.BVH.WIDTH;
 
-import java.util.stream.IntStream;
-
 /**
  * Collapses a {@link BvhBuilder}'s binary tree into the wide nodes of a {@link BVH}, written depth-first: a wide node
  * starts from a binary node's two children and repeatedly opens the interior child with the most work below it (its
@@ -47,7 +45,7 @@ final class WideCollapser {
         int[] children = new int[WIDTH];
         int n = open(0, children);
         int[] sizes = new int[n];
-        IntStream.range(0, n).parallel().forEach(c -> {
+        BuildPool.forEach(n, true, c -> {
             if (!isLeaf(b, children[c])) sizes[c] = countWideNodes(children[c]);
         });
         int[] links = new int[n];
@@ -57,7 +55,7 @@ final class WideCollapser {
             next += sizes[c];
         }
         allocate(next);
-        IntStream.range(0, n).parallel().forEach(c -> {
+        BuildPool.forEach(n, true, c -> {
             if (!isLeaf(b, children[c])) new WideCollapser(this, links[c]).collapse(children[c]);
         });
         count = next;

@@ -135,24 +135,21 @@ class BVHTest {
     }
 
     /**
-     * The parallel build's workers end soon after it (the JDK's default keeps idle workers for 60 s, and a host that
-     * waits for a program's threads, such as {@code mvn exec:java}, waited 15 s after every render for them).
+     * Every parallel step of a build (the tree's top, a large mesh's boxes and layout, the collapse) runs in the
+     * build's pool, none in the JDK's common pool, and the pool's workers end soon after: the JDK keeps idle workers
+     * for 60 s, and a host that waits for a program's threads, such as {@code mvn exec:java}, waited 15 s after every
+     * render for them.
      */
     @Test
-    void theParallelBuildsWorkersEndWhenIdle() throws InterruptedException {
-        int n = 2 * BVH.PARALLEL_GRAIN;
-        double[] boxes = new double[6 * n];
-        for (int p = 0; p < n; p++) {
-            for (int a = 0; a < 3; a++) {
-                boxes[6 * p + a] = p % (a + 7);
-                boxes[6 * p + 3 + a] = p % (a + 7) + 0.5;
-            }
-        }
-        BVH.build(boxes, 16, 4, true);
-        assertTrue(BvhBuilder.poolThreads() > 0 || Runtime.getRuntime().availableProcessors() == 1);
-        long deadline = System.nanoTime() + (BvhBuilder.IDLE_SECONDS + 9) * 1_000_000_000L;
-        while (BvhBuilder.poolThreads() > 0 && System.nanoTime() < deadline) Thread.sleep(50);
-        assertEquals(0, BvhBuilder.poolThreads(), "workers still alive 10 s after the build");
+    void theBuildsWorkersEndWhenIdle() throws InterruptedException {
+        int common = java.util.concurrent.ForkJoinPool.commonPool().getPoolSize();
+        Mesh mesh = Meshes.heightfield(185); // 68,450 triangles: boxes and layout in parallel
+        Accelerator.build(mesh, true);
+        assertTrue(BuildPool.threads() > 0 || Runtime.getRuntime().availableProcessors() == 1);
+        assertTrue(java.util.concurrent.ForkJoinPool.commonPool().getPoolSize() <= common, "the common pool was used");
+        long deadline = System.nanoTime() + (BuildPool.IDLE_SECONDS + 9) * 1_000_000_000L;
+        while (BuildPool.threads() > 0 && System.nanoTime() < deadline) Thread.sleep(50);
+        assertEquals(0, BuildPool.threads(), "workers still alive 10 s after the build");
     }
 
     /**
