@@ -52,6 +52,12 @@ final class DirectLightEstimator {
      * sampled with shadow rays, in light order; last the set-aside lights are added, each scaled by the fraction
      * of the sampled lights' light that got through (Ward's adaptive shadow testing, as in Radiance's direct
      * threshold): an estimate off by at most the light's own contribution, usually by far less.
+     *
+     * <p>With {@code firstHit} (the primary ray's hit, shaded at the first level) the unshadowed terms and the cut-off's
+     * choice are kept, and the samples that shade the same hit again ({@link SimpleRayTracer#traceAgain}: progressive
+     * samples through a pinhole's pixel centre) take them as they are: they depend on the point, its material, the
+     * view and the lights, which those samples share, and on the cut-off's budget, which each sample starts afresh.
+     * Only the shadow rays differ. The colours are the same bit for bit.
      */
     void estimate(
             SurfacePoint sp,
@@ -62,7 +68,36 @@ final class DirectLightEstimator {
             double nv,
             TraceContext ctx,
             long path,
-            double weight) {
+            double weight,
+            boolean firstHit) {
+        DirectLighting direct = ctx.direct(lights.length);
+        if (firstHit && ctx.termsKept) {
+            ctx.cutoffBudget = ctx.termsCutoffLeft;
+        } else {
+            ctx.termsKept = false; // the terms are about to be another point's
+            unshadowedTerms(sp, m, vx, vy, vz, nv, ctx, weight, direct);
+            if (firstHit) {
+                ctx.termsKept = true;
+                ctx.termsCutoffLeft = ctx.cutoffBudget;
+            }
+        }
+        shadowedSum(sp, ctx, path, direct);
+    }
+
+    /**
+     * Every light's unshadowed contribution into {@code direct}, then, with the light cut-off, the faintest set aside
+     * (which spends the sample's budget, {@code ctx.cutoffBudget}).
+     */
+    private void unshadowedTerms(
+            SurfacePoint sp,
+            Material m,
+            double vx,
+            double vy,
+            double vz,
+            double nv,
+            TraceContext ctx,
+            double weight,
+            DirectLighting direct) {
         Double3 kD = m.getKd(), kS = m.getKs();
         double kdR = kD.d1, kdG = kD.d2, kdB = kD.d3;
         Texture map = m.getKdMap();
@@ -75,7 +110,6 @@ final class DirectLightEstimator {
         }
         boolean responds = kdR != 0 || kdG != 0 || kdB != 0 || !kS.isZero();
         boolean specularResponse = !kS.isZero();
-        DirectLighting direct = ctx.direct(lights.length);
         direct.setAside = 0;
         for (int li = 0; li < lights.length; li++) {
             LightSample ls = direct.samples[li];
@@ -102,6 +136,13 @@ final class DirectLightEstimator {
         if (plan.lightCutoff > 0) {
             ctx.cutoffBudget = direct.setAsideFaintest(ctx.cutoffBudget);
         }
+    }
+
+    /**
+     * The lights of {@code direct} not skipped or set aside, each through its shadow rays, then those set aside in the
+     * proportion the others passed, into {@code ctx.red, green, blue}.
+     */
+    private void shadowedSum(SurfacePoint sp, TraceContext ctx, long path, DirectLighting direct) {
         double r = 0, g = 0, b = 0;
         double unshadowed = 0, passed = 0;
         // The shadow rays start on the point's surface, offset toward the light's side: a flat surface cannot block

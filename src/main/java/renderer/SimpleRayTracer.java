@@ -186,6 +186,7 @@ public class SimpleRayTracer extends RayTracerBase {
         if (level == settings.maxLevel()) {
             ctx.firstRayMissed = !found; // for traceAgain
             ctx.directKept = false; // a new first hit
+            ctx.termsKept = false;
         }
         if (!found) return null;
         hit.complete(ray);
@@ -225,7 +226,8 @@ public class SimpleRayTracer extends RayTracerBase {
         if (directRepeats && level == settings.maxLevel()) {
             directAtFirstHit(sp, m, vx, vy, vz, nv, ctx, path);
         } else {
-            directLight.estimate(sp, m, vx, vy, vz, nv, ctx, path, Math.max(kr, Math.max(kg, kb)));
+            directLight.estimate(
+                    sp, m, vx, vy, vz, nv, ctx, path, Math.max(kr, Math.max(kg, kb)), level == settings.maxLevel());
         }
         r += ctx.red;
         g += ctx.green;
@@ -303,7 +305,7 @@ public class SimpleRayTracer extends RayTracerBase {
             ctx.cutoffBudget = ctx.directCutoffLeft;
             return;
         }
-        directLight.estimate(sp, m, vx, vy, vz, nv, ctx, path, 1);
+        directLight.estimate(sp, m, vx, vy, vz, nv, ctx, path, 1, false);
         ctx.directR = ctx.red;
         ctx.directG = ctx.green;
         ctx.directB = ctx.blue;

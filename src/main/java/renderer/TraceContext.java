@@ -82,6 +82,15 @@ public final class TraceContext {
     double directR, directG, directB, directCutoffLeft;
 
     /**
+     * Whether the lights' unshadowed terms in {@link #direct} are those of the first hit of the last primary ray, kept
+     * for the samples that shade that hit again with soft lights (see DirectLightEstimator), and the light cut-off's
+     * budget they left.
+     */
+    boolean termsKept;
+
+    double termsCutoffLeft;
+
+    /**
      * {@link #continueSequence(long, int, renderer.sampling.TargetShape, double[])} for the stream of {@code stream}
      * and {@code part} (a light's index, a level), mixed only in a progressive render: other renders pay one
      * comparison.
