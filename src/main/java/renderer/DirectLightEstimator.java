@@ -75,67 +75,53 @@ final class DirectLightEstimator {
             ctx.cutoffBudget = ctx.termsCutoffLeft;
         } else {
             ctx.termsKept = false; // the terms are about to be another point's
-            unshadowedTerms(sp, m, vx, vy, vz, nv, ctx, weight, direct);
+            // Every light's unshadowed contribution, then, with the light cut-off, the faintest set aside (which
+            // spends the sample's budget).
+            Double3 kD = m.getKd(), kS = m.getKs();
+            double kdR = kD.d1, kdG = kD.d2, kdB = kD.d3;
+            Texture map = m.getKdMap();
+            if (map != null) { // untextured materials pay only this test
+                double[] texel = ctx.texel;
+                map.lookup(sp.texU, sp.texV, texel);
+                kdR *= texel[0];
+                kdG *= texel[1];
+                kdB *= texel[2];
+            }
+            boolean responds = kdR != 0 || kdG != 0 || kdB != 0 || !kS.isZero();
+            boolean specularResponse = !kS.isZero();
+            direct.setAside = 0;
+            for (int li = 0; li < lights.length; li++) {
+                LightSample ls = direct.samples[li];
+                lights[li].illuminate(sp.px, sp.py, sp.pz, ls);
+                direct.state[li] = DirectLighting.SKIP;
+                if (ls.distance == 0) continue; // the point is the light itself
+                double nl = sp.snx * ls.lx + sp.sny * ls.ly + sp.snz * ls.lz;
+                boolean facing = nl * nv > 0; // light and viewer on the same side of the surface
+                boolean contributes = facing && responds && !ls.isBlack();
+                if (!contributes && plan.planning) continue;
+                double diffuse = Math.abs(nl);
+                double specular = 0;
+                if (specularResponse) {
+                    // r = l - 2(l.n)n; the highlight is where -v.r approaches 1.
+                    double minusVr = -((vx * ls.lx + vy * ls.ly + vz * ls.lz) - 2 * nl * nv);
+                    if (minusVr > 0) specular = Util.power(minusVr, m.getShininess());
+                }
+                // The material's response to the light, per unit of its intensity.
+                double fr = kdR * diffuse + kS.d1 * specular;
+                double fg = kdG * diffuse + kS.d2 * specular;
+                double fb = kdB * diffuse + kS.d3 * specular;
+                direct.set(
+                        li, contributes ? DirectLighting.CONTRIBUTES : DirectLighting.WEIGHTLESS, fr, fg, fb, weight);
+            }
+            if (plan.lightCutoff > 0) {
+                ctx.cutoffBudget = direct.setAsideFaintest(ctx.cutoffBudget);
+            }
             if (firstHit) {
                 ctx.termsKept = true;
                 ctx.termsCutoffLeft = ctx.cutoffBudget;
             }
         }
         shadowedSum(sp, ctx, path, direct);
-    }
-
-    /**
-     * Every light's unshadowed contribution into {@code direct}, then, with the light cut-off, the faintest set aside
-     * (which spends the sample's budget, {@code ctx.cutoffBudget}).
-     */
-    private void unshadowedTerms(
-            SurfacePoint sp,
-            Material m,
-            double vx,
-            double vy,
-            double vz,
-            double nv,
-            TraceContext ctx,
-            double weight,
-            DirectLighting direct) {
-        Double3 kD = m.getKd(), kS = m.getKs();
-        double kdR = kD.d1, kdG = kD.d2, kdB = kD.d3;
-        Texture map = m.getKdMap();
-        if (map != null) { // untextured materials pay only this test
-            double[] texel = ctx.texel;
-            map.lookup(sp.texU, sp.texV, texel);
-            kdR *= texel[0];
-            kdG *= texel[1];
-            kdB *= texel[2];
-        }
-        boolean responds = kdR != 0 || kdG != 0 || kdB != 0 || !kS.isZero();
-        boolean specularResponse = !kS.isZero();
-        direct.setAside = 0;
-        for (int li = 0; li < lights.length; li++) {
-            LightSample ls = direct.samples[li];
-            lights[li].illuminate(sp.px, sp.py, sp.pz, ls);
-            direct.state[li] = DirectLighting.SKIP;
-            if (ls.distance == 0) continue; // the point is the light itself
-            double nl = sp.snx * ls.lx + sp.sny * ls.ly + sp.snz * ls.lz;
-            boolean facing = nl * nv > 0; // light and viewer on the same side of the surface
-            boolean contributes = facing && responds && !ls.isBlack();
-            if (!contributes && plan.planning) continue;
-            double diffuse = Math.abs(nl);
-            double specular = 0;
-            if (specularResponse) {
-                // r = l - 2(l.n)n; the highlight is where -v.r approaches 1.
-                double minusVr = -((vx * ls.lx + vy * ls.ly + vz * ls.lz) - 2 * nl * nv);
-                if (minusVr > 0) specular = Util.power(minusVr, m.getShininess());
-            }
-            // The material's response to the light, per unit of its intensity.
-            double fr = kdR * diffuse + kS.d1 * specular;
-            double fg = kdG * diffuse + kS.d2 * specular;
-            double fb = kdB * diffuse + kS.d3 * specular;
-            direct.set(li, contributes ? DirectLighting.CONTRIBUTES : DirectLighting.WEIGHTLESS, fr, fg, fb, weight);
-        }
-        if (plan.lightCutoff > 0) {
-            ctx.cutoffBudget = direct.setAsideFaintest(ctx.cutoffBudget);
-        }
     }
 
     /**
