@@ -23,7 +23,7 @@ final class Neighbourhoods {
      * Per pixel, the largest of {@code values} over its neighbourhood and 0, into {@code out}: each value that is not
      * 0 raises the nine pixels around it (the maximum does not depend on the order it is taken in). A converging
      * image is mostly zeros, so this touches a few pixels of it, where filtering rows and columns touched all of them
-     * twice: a command line's first plan ran that interpreted, 11-13 ms of a 0.25 s render of the POV-Ray scene.
+     * twice: a command line's first plan ran that interpreted, 11-18 ms of a 0.25-0.35 s render of the POV-Ray scene.
      */
     double[] largest(double[] values, double[] out) {
         Arrays.fill(out, 0, nX * nY, 0);

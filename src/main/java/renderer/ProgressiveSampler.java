@@ -36,7 +36,7 @@ final class ProgressiveSampler {
     /**
      * Per pixel, the variance of one sample: its error estimate times its samples, set by the render thread that
      * advanced the pixel, where the samples land. (Computed by the plan, it was a whole-image loop that a command
-     * line's first plan ran interpreted: 7-9 ms of a 0.25 s render of the POV-Ray scene.)
+     * line's first plan ran interpreted: 7-11 ms of a 0.25-0.35 s render of the POV-Ray scene.)
      */
     private final double[] variance;
     /** Per-pixel arrays of the planning, reused from pass to pass and filled anew by each plan. */
@@ -120,8 +120,11 @@ final class ProgressiveSampler {
         return new ProgressiveReport(settings, predictedError(), samples(), passes, range[0], range[1], range[2]);
     }
 
-    /** Bytes per pixel of this state: the halves' sums, the counts, the planning's arrays and the law's record. */
-    static final int BYTES_PER_PIXEL = 6 * 8 + 3 * 4 + 3 * 8 + 8 + 4;
+    /**
+     * Bytes per pixel of this state: the halves' sums (6 doubles), the counts and goals (2 ints), the planning's
+     * arrays (3 doubles) and the law's record (a double and an int).
+     */
+    static final int BYTES_PER_PIXEL = 6 * 8 + 2 * 4 + 3 * 8 + 8 + 4;
 
     /**
      * Brings pixel (x, y) to its goal for this pass (called from the render threads, once per pixel per pass), unless a
