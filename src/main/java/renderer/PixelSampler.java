@@ -114,29 +114,43 @@ final class PixelSampler {
     }
 
     /**
-     * Sample {@code index} of half {@code half} (0 or 1) of pixel (x, y) for progressive sampling, into
-     * {@code ctx.red, green, blue}: the Halton point of that index over the pixel, shifted by the half's own random
-     * offset (Cranley-Patterson rotation), so that the two halves are independent low-discrepancy estimates of the
-     * pixel. With anti-aliasing of one sample, every sample goes through the pixel's centre with effect samples
-     * (shadow, lens, glossy rays) of its own; {@code again} says that the previous sample this context took was of
-     * the same pixel, so that a pinhole camera's first hit can be reused.
+     * Sample {@code index} of half {@code half} (0 or 1) of pixel (x, y) for progressive sampling with one camera ray
+     * per pixel asked, into {@code ctx.red, green, blue}: the ray through the pixel's centre, with effect samples
+     * (shadow, lens, glossy rays) of its own. {@code again} says that the previous sample this context took was of
+     * the same pixel, so that a pinhole camera's first hit can be reused. (Samples over the pixel's area:
+     * {@link #progressiveArea}.)
      */
     void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
         long path = beginProgressive(x, y, half, index, ctx);
+        // After the first sample, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
+        // reused.
+        if (again && pinholeCentre()) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
+        else sample(centreU(x), centreV(y), path, ctx);
+        ctx.sequenceIndex = -1;
+    }
+
+    /**
+     * Samples {@code first} to {@code first + count - 1} of half {@code half} of pixel (x, y) over the pixel's area,
+     * into the half's sums at {@code sums[o]} (red, green, blue), each colour added in turn: the Halton points of
+     * those indices over the pixel, shifted by the half's own random offset (Cranley-Patterson rotation), so that the
+     * two halves are independent low-discrepancy estimates of the pixel. One loop, not a call per sample: the
+     * anti-aliasing experiment's progressive renders, warm, 0.97x the time.
+     */
+    void progressiveArea(int x, int y, int half, int first, int count, double[] sums, int o, TraceContext ctx) {
+        beginProgressive(x, y, half, first, ctx);
         double u = centreU(x), v = centreV(y);
-        if (antiAliasing.getSampleCount() == 1) {
-            // One camera ray per pixel asked: every sample goes through the pixel's centre and refines the effects;
-            // after the first, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
-            // reused.
-            if (again && pinholeCentre()) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
-            else sample(u, v, path, ctx);
-        } else {
-            // The half's shifted Halton point over the pixel's area.
-            double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + ctx.halfShifts[2 * half];
-            double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + ctx.halfShifts[2 * half + 1];
+        double shiftX = ctx.halfShifts[2 * half], shiftY = ctx.halfShifts[2 * half + 1];
+        long pixelSeed = ctx.progressivePixelSeed;
+        for (int index = first, end = first + count; index < end; index++) {
+            ctx.sequenceIndex = index;
+            double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + shiftX;
+            double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + shiftY;
             if (ox >= 1) ox -= 1;
             if (oy >= 1) oy -= 1;
-            sample(u + (ox - 0.5) * pixelWidth, v - (oy - 0.5) * pixelHeight, path, ctx);
+            sample(u + (ox - 0.5) * pixelWidth, v - (oy - 0.5) * pixelHeight, pathSeed(pixelSeed, half, index), ctx);
+            sums[o] += ctx.red;
+            sums[o + 1] += ctx.green;
+            sums[o + 2] += ctx.blue;
         }
         ctx.sequenceIndex = -1;
     }
@@ -197,7 +211,12 @@ final class PixelSampler {
         }
         ctx.sequenceIndex = index;
         ctx.sequenceSeed = ctx.halfSeeds[half];
-        return SampleStream.mix(ctx.progressivePixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
+        return pathSeed(ctx.progressivePixelSeed, half, index);
+    }
+
+    /** The path seed of sample {@code index} of half {@code half} of the pixel whose seed is {@code pixelSeed}. */
+    private static long pathSeed(long pixelSeed, int half, int index) {
+        return SampleStream.mix(pixelSeed, PROGRESSIVE_PATHS + 2L * index + half);
     }
 
     /**

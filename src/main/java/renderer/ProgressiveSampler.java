@@ -134,8 +134,24 @@ final class ProgressiveSampler {
         int p = y * nX + x;
         int from = done[p], to = goal[p];
         if (to <= from || deadline.passed(ctx)) return;
-        // Centre samples of a pinhole camera: one camera ray per pixel and pass, its first hit shaded again by every
-        // sample, and where they can by all of a half's samples at once (the shadow rays of every sample).
+        if (pixels.samplesArea()) {
+            // Samples over the pixel's area: each traces its own camera ray, added to its half's sums as it comes.
+            for (int half = 0; half < 2; half++) {
+                pixels.progressiveArea(x, y, half, from, to - from, sums, 6 * p + 3 * half, ctx);
+            }
+        } else {
+            centreSamples(p, x, y, from, to, ctx);
+        }
+        done[p] = Math.max(done[p], goal[p]);
+        variance[p] = errorSquared(p) * 2.0 * done[p];
+    }
+
+    /**
+     * Brings pixel p = (x, y) from {@code from} to {@code to} samples per half through its centre. With a pinhole
+     * camera: one camera ray per pixel and pass, its first hit shaded again by every sample, and where they can by
+     * all of a half's samples at once (the shadow rays of every sample).
+     */
+    private void centreSamples(int p, int x, int y, int from, int to, TraceContext ctx) {
         boolean located = pixels.locateCentre(x, y, ctx);
         for (int half = 0; half < 2; half++) {
             int i = from;
@@ -147,8 +163,6 @@ final class ProgressiveSampler {
             }
             for (; i < to; i++) add(p, half, x, y, i, true, ctx);
         }
-        done[p] = Math.max(done[p], goal[p]);
-        variance[p] = errorSquared(p) * 2.0 * done[p];
     }
 
     /** Takes sample {@code index} of half {@code half} of pixel p = (x, y) and adds it to the half's sums. */
