@@ -47,6 +47,9 @@ final class ProgressiveSampler {
     private double predictedMse;
 
     private long samplesPredicted = -1;
+    /** How many times the plans so far summed the law's prediction over the image (the cost of planning). */
+    long lawSums;
+
     /** How the pixels' errors fall with their samples, fitted pass by pass. */
     private final ConvergenceLaw law;
     /** Samples every pixel reaches first. */
@@ -270,6 +273,13 @@ final class ProgressiveSampler {
         // A little below the target: a plan that lands on it exactly misses it by a hair half the time, and each
         // further pass costs a plan for a handful of samples (the POV-Ray scene took up to seven passes that way).
         double goalMse = Math.max(LANDING * target * target, reachable);
+        if (predictedMse(scale, noisy, powers, weight, 0) <= goalMse) {
+            // The pass can do no better than now (the noisy pixels are at their maximum), so every factor meets the
+            // goal, and the search below would halve its bound down to zero: a thousand sums of the law over the
+            // image (19 ms of an anti-aliasing render of 160 x 120 pixels held at 16 samples), to plan nothing.
+            law.remember(mse, done);
+            return setGoals(weight, 0);
+        }
         double lo = 0, hi = 1;
         while (predictedMse(scale, noisy, powers, weight, hi) > goalMse && hi < 1e30) hi *= 2;
         // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
@@ -360,6 +370,7 @@ final class ProgressiveSampler {
      * {@code goal^-alpha} ({@code powers}), summed (the other pixels add exactly zero), over all pixels.
      */
     private double predictedMse(double[] scale, int[] noisy, double[] powers, double[] weight, double lambda) {
+        lawSums++;
         double sum = 0;
         for (int k = 0; k < noisy.length; k++) sum += scale[k] * powers[halfGoal(weight, lambda, noisy[k])];
         return sum / done.length;
