@@ -9,9 +9,10 @@ import java.util.Arrays;
  * <p>A pixel's error estimate is {@code ((A - B) / 2)^2} per channel, A and B the means of its halves clamped to the
  * displayable 0..255: the expected squared error of their mean, exact for independent halves, whatever the sampling
  * pattern. Per pixel it is noisy (one degree of freedom), so the prediction averages each pixel's per-sample variance
- * over its 3 x 3 neighbourhood and the plan weighs pixels by the neighbourhood's largest. The plan assumes each pixel's
- * MSE falls as {@code n^-alpha}, alpha fitted to the passes so far ({@link ConvergenceLaw}), and the next pass measures
- * again.
+ * over its 3 x 3 neighbourhood. A target's plan weighs pixels by the neighbourhood's largest, and assumes each pixel's
+ * MSE falls as {@code n^-alpha}, alpha fitted to the passes so far ({@link ConvergenceLaw}); a time budget's plan
+ * weighs them by the fourth root of their own estimate or the neighbourhood's mean ({@link #budgetWeights}). The next
+ * pass measures again.
  *
  * <p>Pixels are planned in image order and each pass's decisions depend only on the pixels' values, so the samples,
  * and the image, are the same for any number of threads (a time budget, which measures time, is the exception).
@@ -235,6 +236,16 @@ final class ProgressiveSampler {
         return mse;
     }
 
+    /** The variance of one sample of pixel (x, y), as its halves estimate it. */
+    double varianceAt(int x, int y) {
+        return variance[y * nX + x];
+    }
+
+    /** Samples pixel (x, y) has taken so far (both halves). */
+    int samplesAt(int x, int y) {
+        return 2 * done[y * nX + x];
+    }
+
     /** Samples taken so far (both halves of every pixel). */
     long samples() {
         long total = 0;
@@ -323,7 +334,7 @@ final class ProgressiveSampler {
             }
             return planned;
         }
-        double[] weight = weights(neighbourhoods.largest(variance, weightScratch));
+        double[] weight = budgetWeights();
         double lo = 0, hi = 1;
         while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
         while (hi - lo > 1e-3 * hi) {
@@ -332,6 +343,35 @@ final class ProgressiveSampler {
             else hi = mid;
         }
         return setGoals(weight, lo);
+    }
+
+    /**
+     * A time budget's share of new samples per pixel: the fourth root of its variance of one sample, the larger of its
+     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (in the array of the
+     * neighbourhoods' largest variances).
+     *
+     * <p>Not the target's weights ({@link #weights}: the square root of the neighbourhood's largest). Measured at equal
+     * samples (budgets counted in samples, so that the images are deterministic; the geometric mean over 12 to 17
+     * budgets), these put 0-6.9% less error on the experiments of the accuracy report: anti-aliasing 6.9%, the street
+     * 5.6%, glossy 1.9%, depth of field 1.5%, soft shadows 0.0-0.8%. Two reasons: a low-discrepancy pixel's error falls faster
+     * than {@code 1/n} ({@link ConvergenceLaw}), so its best share grows more slowly than its standard deviation; and a
+     * pixel's estimate is noisy, so a root damps the pixels that drew a large one by chance. The neighbourhood's
+     * largest spread an edge's weight over a band three pixels wide; its mean keeps what the pixel's own estimate
+     * missed. A target keeps its weights: its renders stop on the measured estimate, and these took the same samples
+     * within 3% there.
+     */
+    private double[] budgetWeights() {
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
+        double[] mean = neighbourhoods.mean(variance, largest, meanScratch);
+        double[] weight = largest;
+        double sum = 0;
+        for (int p = 0; p < weight.length; p++) {
+            weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));
+            sum += weight[p];
+        }
+        double floor = 0.05 * sum / weight.length;
+        for (int p = 0; p < weight.length; p++) weight[p] += floor;
+        return weight;
     }
 
     /** Samples that bring every pixel's halves to at least {@code level}. */
