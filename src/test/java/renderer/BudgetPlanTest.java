@@ -3,9 +3,6 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
-import renderer.sampling.SamplingConfig;
-import renderer.sampling.SamplingPattern;
-import renderer.sampling.TargetShape;
 
 /**
  * A time budget's plan toward the minimum samples, with samples over the pixel's area (minimum 16): as far as the
@@ -19,11 +16,7 @@ class BudgetPlanTest {
 
     /** A sampler after its first pass: every pixel holds 2 samples per half. */
     private static ProgressiveSampler afterFirstPass() {
-        Camera camera = FeatureScenes.shadowCamera(FeatureScenes.shadowScene(FeatureScenes.shadowLight(), null), NX)
-                .setResolution(NX, NY)
-                .build()
-                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.HALTON));
-        camera.renderImage(); // prepares the tracer
+        Camera camera = FeatureScenes.areaSampledShadowCamera(null, NX, NY);
         ProgressiveSampler sampler =
                 new ProgressiveSampler(new PixelSampler(camera), ProgressiveSettings.timeBudget(10), NX, NY);
         TraceContext ctx = new TraceContext();

@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import primitives.Material;
-import renderer.sampling.SamplingConfig;
-import renderer.sampling.SamplingPattern;
-import renderer.sampling.TargetShape;
 
 /**
  * A time budget's plan weighs each pixel by its own estimate or its neighbourhood's mean, not by its neighbourhood's
@@ -19,11 +16,7 @@ class BudgetWeightsTest {
 
     @Test
     void aFlatPixelBesideTheMostSampledEdgePixelTakesFewerSamples() {
-        Camera camera = FeatureScenes.shadowCamera(
-                        FeatureScenes.shadowScene(FeatureScenes.shadowLight(), new Material()), N)
-                .build()
-                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.HALTON));
-        camera.renderImage(); // prepares the tracer
+        Camera camera = FeatureScenes.areaSampledShadowCamera(new Material(), N, N);
         ProgressiveSampler sampler =
                 new ProgressiveSampler(new PixelSampler(camera), ProgressiveSettings.timeBudget(10), N, N);
         TraceContext ctx = new TraceContext();

@@ -8,6 +8,9 @@ import primitives.Color;
 import primitives.Material;
 import primitives.Point;
 import primitives.Vector;
+import renderer.sampling.SamplingConfig;
+import renderer.sampling.SamplingPattern;
+import renderer.sampling.TargetShape;
 import scene.Scene;
 
 /** Small scenes made to exercise one sampled effect each, and image helpers for the tests that use them. */
@@ -45,6 +48,19 @@ final class FeatureScenes {
                 .setVpSize(100, 100)
                 .setResolution(resolution, resolution)
                 .setRayTracer(scene, RayTracerType.SIMPLE);
+    }
+
+    /**
+     * A camera over {@link #shadowScene} (with {@code occluder}, or none) whose pixels take 4 HALTON samples over their
+     * area, rendered once so that its tracer is prepared: for tests that drive a {@link ProgressiveSampler} by hand.
+     */
+    static Camera areaSampledShadowCamera(Material occluder, int nX, int nY) {
+        Camera camera = shadowCamera(shadowScene(shadowLight(), occluder), nX)
+                .setResolution(nX, nY)
+                .build()
+                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.HALTON));
+        camera.renderImage();
+        return camera;
     }
 
     /** Mean of the three channels. */

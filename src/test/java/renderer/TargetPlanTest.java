@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import renderer.sampling.SamplingConfig;
-import renderer.sampling.SamplingPattern;
-import renderer.sampling.TargetShape;
 
 /**
  * A target's plan where no pixel may take more samples (each at its maximum) and the target is not met: it plans
@@ -18,12 +15,9 @@ class TargetPlanTest {
 
     @Test
     void aPlanWithEveryPixelAtItsMaximumPlansNothingInAFewSums() {
-        // A soft light and samples over the pixels' areas: the pixels on the penumbra disagree between their halves.
-        Camera camera = FeatureScenes.shadowCamera(FeatureScenes.shadowScene(FeatureScenes.shadowLight(), null), NX)
-                .setResolution(NX, NY)
-                .build()
-                .setSamplingConfig(new SamplingConfig(4, TargetShape.RECTANGLE, SamplingPattern.HALTON));
-        camera.renderImage(); // prepares the tracer
+        // Samples over the pixels' areas of a floor lit at a slant: the light falls off across each pixel, so its
+        // halves disagree a little.
+        Camera camera = FeatureScenes.areaSampledShadowCamera(null, NX, NY);
         ProgressiveSettings settings = ProgressiveSettings.targetError(1e-6).withSamples(16, 16);
         ProgressiveSampler sampler = new ProgressiveSampler(new PixelSampler(camera), settings, NX, NY);
         TraceContext ctx = new TraceContext();
