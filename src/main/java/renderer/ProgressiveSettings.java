@@ -20,11 +20,14 @@ import primitives.Limits;
  *     {@link #AUTOMATIC}: 16 over the pixel's area (edges need that many to be seen), 2 through its centre (one per
  *     half: where both halves' effect samples agree exactly, in full light or full shadow, the pixel is done, and a
  *     penumbra shows as a disagreement in the pixel or in a neighbour); a time budget starts from 4 and brings every
- *     pixel to the minimum before spending the rest where the estimates are highest
+ *     pixel to the minimum (automatically 8 over the area, since a budget stops on time, not on its estimates)
+ *     before spending the rest where the estimates are highest
  * @param maxSamples the most samples a pixel may receive, up to 1,048,576
  */
 public record ProgressiveSettings(double targetError, double timeBudgetSeconds, int minSamples, int maxSamples) {
-    /** The minimum samples chosen by the sampling: 16 over a pixel's area, 2 through its centre. */
+    /**
+     * The minimum samples chosen by the sampling: 16 over a pixel's area (8 for a time budget), 2 through its centre.
+     */
     public static final int AUTOMATIC = 0;
     /** The most samples a pixel receives unless told otherwise. */
     public static final int DEFAULT_MAX_SAMPLES = 4096;

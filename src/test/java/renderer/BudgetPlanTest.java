@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import org.junit.jupiter.api.Test;
 
 /**
- * A time budget's plan toward the minimum samples, with samples over the pixel's area (minimum 16): as far as the
- * budget goes, and by one sample per half at least even when the budget, counted in samples at the time per sample
+ * A time budget's plan toward the minimum samples, with samples over the pixel's area (minimum 8 by default, 16 here
+ * where asked): as far as the budget goes, and by one sample per half at least even when the budget, counted in samples at the time per sample
  * measured so far, cannot pay for that. The pass then stops at the budget's end; the time per sample measured over a
  * command line's first pass is the JIT's, many times the next pass's, and the render used to end there with most of
  * its budget left.
@@ -14,11 +14,15 @@ import org.junit.jupiter.api.Test;
 class BudgetPlanTest {
     private static final int NX = 8, NY = 6;
 
-    /** A sampler after its first pass: every pixel holds 2 samples per half. */
+    /** A sampler after its first pass, with the minimum 16: every pixel holds 2 samples per half. */
     private static ProgressiveSampler afterFirstPass() {
+        return afterFirstPass(
+                ProgressiveSettings.timeBudget(10).withSamples(16, ProgressiveSettings.DEFAULT_MAX_SAMPLES));
+    }
+
+    private static ProgressiveSampler afterFirstPass(ProgressiveSettings settings) {
         Camera camera = FeatureScenes.areaSampledShadowCamera(null, NX, NY);
-        ProgressiveSampler sampler =
-                new ProgressiveSampler(new PixelSampler(camera), ProgressiveSettings.timeBudget(10), NX, NY);
+        ProgressiveSampler sampler = new ProgressiveSampler(new PixelSampler(camera), settings, NX, NY);
         TraceContext ctx = new TraceContext();
         for (int y = 0; y < NY; y++) for (int x = 0; x < NX; x++) sampler.advance(x, y, ctx);
         assertEquals(4L * NX * NY, sampler.samples(), "the first pass of a budget: 4 samples per pixel");
@@ -36,5 +40,12 @@ class BudgetPlanTest {
         assertEquals(6L * NX * NY, afterFirstPass().planForSamples(6L * NX * NY));
         // The minimum (16, 8 per half) caps the steps however large the budget.
         assertEquals(12L * NX * NY, afterFirstPass().planForSamples(1_000_000));
+    }
+
+    @Test
+    void aBudgetsAutomaticMinimumOverTheAreaIs8() {
+        // From 2 to 4 samples per half, 4 per pixel, however large the budget.
+        assertEquals(
+                4L * NX * NY, afterFirstPass(ProgressiveSettings.timeBudget(10)).planForSamples(1_000_000));
     }
 }
