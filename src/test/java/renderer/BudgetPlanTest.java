@@ -31,21 +31,22 @@ class BudgetPlanTest {
 
     @Test
     void aBudgetShortOfAWholeStepStillRaisesEveryPixelByOneSamplePerHalf() {
-        assertEquals(2L * NX * NY, afterFirstPass().planForSamples(1));
+        assertEquals(2L * NX * NY, afterFirstPass().planner.planForSamples(1));
     }
 
     @Test
     void aBudgetThatPaysForSeveralStepsTakesThemAll() {
         // To 5 samples per half: 3 more per half, 6 per pixel, which a budget of 6 per pixel pays for, not more.
-        assertEquals(6L * NX * NY, afterFirstPass().planForSamples(6L * NX * NY));
+        assertEquals(6L * NX * NY, afterFirstPass().planner.planForSamples(6L * NX * NY));
         // The minimum (16, 8 per half) caps the steps however large the budget.
-        assertEquals(12L * NX * NY, afterFirstPass().planForSamples(1_000_000));
+        assertEquals(12L * NX * NY, afterFirstPass().planner.planForSamples(1_000_000));
     }
 
     @Test
     void aBudgetsAutomaticMinimumOverTheAreaIs8() {
         // From 2 to 4 samples per half, 4 per pixel, however large the budget.
         assertEquals(
-                4L * NX * NY, afterFirstPass(ProgressiveSettings.timeBudget(10)).planForSamples(1_000_000));
+                4L * NX * NY,
+                afterFirstPass(ProgressiveSettings.timeBudget(10)).planner.planForSamples(1_000_000));
     }
 }

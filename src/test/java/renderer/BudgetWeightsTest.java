@@ -24,7 +24,7 @@ class BudgetWeightsTest {
             for (int y = 0; y < N; y++) for (int x = 0; x < N; x++) sampler.advance(x, y, ctx);
         };
         pass.run();
-        sampler.planForSamples(Long.MAX_VALUE / 4); // to the minimum, 8 per pixel
+        sampler.planner.planForSamples(Long.MAX_VALUE / 4); // to the minimum, 8 per pixel
         pass.run();
         int mostX = 1, mostY = 1;
         for (int y = 1; y < N - 1; y++) {
@@ -35,7 +35,7 @@ class BudgetWeightsTest {
                 }
             }
         }
-        sampler.planForSamples(8L * N * N); // half as many again, where the estimates are
+        sampler.planner.planForSamples(8L * N * N); // half as many again, where the estimates are
         pass.run();
 
         int most = sampler.samplesAt(mostX, mostY), fewest = Integer.MAX_VALUE;

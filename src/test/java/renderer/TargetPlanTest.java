@@ -25,7 +25,7 @@ class TargetPlanTest {
         assertEquals(16L * NX * NY, sampler.samples(), "the first pass takes every pixel to the minimum, 16");
         assertTrue(sampler.predictedError() > 1e-6, "the target is not met: " + sampler.predictedError());
 
-        assertEquals(0, sampler.planForError(1e-6), "every pixel is at its maximum: nothing to plan");
-        assertTrue(sampler.lawSums <= 4, "the plan summed the law " + sampler.lawSums + " times");
+        assertEquals(0, sampler.planner.planForError(1e-6), "every pixel is at its maximum: nothing to plan");
+        assertTrue(sampler.planner.lawSums <= 4, "the plan summed the law " + sampler.planner.lawSums + " times");
     }
 }

@@ -1,0 +1,268 @@
+package renderer;
+
+/**
+ * The plans of a {@link ProgressiveSampler}'s passes, and the prediction they follow: from each pixel's variance of one
+ * sample, how many samples each pixel should reach in the coming pass ({@code goal}), toward a target error
+ * ({@link #planForError}) or to spend a share of a time budget ({@link #planForSamples}), and the image's predicted
+ * error. The sampler's passes take the samples and set the variances; this class only reads them.
+ *
+ * <p>A target's plan weighs pixels by the neighbourhood's largest variance, and assumes each pixel's MSE falls as
+ * {@code n^-alpha}, alpha fitted to the passes so far ({@link ConvergenceLaw}); a time budget's plan weighs them by the
+ * fourth root of their own estimate or the neighbourhood's mean ({@link #budgetWeights}).
+ */
+final class PassPlanner {
+    /** A pass may multiply a pixel's samples by at most this: estimates are checked again before going further. */
+    private static final int GROWTH = 8;
+    /** The share of the target's MSE a plan aims at. */
+    private static final double LANDING = 0.97;
+    /** The sampler's arrays: per pixel, samples per half so far and the goal of the coming pass, and its variance. */
+    private final int[] done, goal;
+
+    private final double[] variance;
+    /** Samples every pixel reaches first, and the most any may take. */
+    private final int minimum, maxSamples;
+
+    /** Per-pixel arrays of the planning, reused from pass to pass and filled anew by each plan. */
+    private final double[] meanScratch, weightScratch;
+    /** The 3 x 3 filters the planning applies to the variances. */
+    private final Neighbourhoods neighbourhoods;
+    /** The last predicted image MSE, and the samples taken when it was predicted (-1: none yet). */
+    private double predictedMse;
+
+    private long samplesPredicted = -1;
+    /** How many times the plans so far summed the law's prediction over the image (the cost of planning). */
+    long lawSums;
+
+    /** How the pixels' errors fall with their samples, fitted pass by pass. */
+    private final ConvergenceLaw law;
+
+    /** Plans for the sampler's arrays, which it fills; {@code nX} x {@code nY} pixels. */
+    PassPlanner(int[] done, int[] goal, double[] variance, int minimum, int maxSamples, int nX, int nY) {
+        this.done = done;
+        this.goal = goal;
+        this.variance = variance;
+        this.minimum = minimum;
+        this.maxSamples = maxSamples;
+        int n = nX * nY;
+        meanScratch = new double[n];
+        weightScratch = new double[n];
+        neighbourhoods = new Neighbourhoods(nX, nY);
+        law = new ConvergenceLaw(n);
+    }
+
+    /**
+     * The predicted RMSE of the image against the converged one, on the 0..255 scale: per pixel, the variance of one
+     * sample averaged over its 3 x 3 neighbourhood, over the pixel's samples. (The pixel's own estimate alone is
+     * biased low once it has decided the pixel's samples: pixels whose few samples agreed by chance stop early and
+     * keep their estimate of zero.)
+     */
+    double predictedError() {
+        if (samples() != samplesPredicted) {
+            pixelMse(variance, neighbourhoods.largest(variance, weightScratch));
+        }
+        return Math.sqrt(predictedMse);
+    }
+
+    /**
+     * Each pixel's predicted MSE, the neighbourhood's variance of one sample over the pixel's samples (in a reused
+     * array), and their mean, the image's, into {@link #predictedMse} for the samples taken so far; {@code largest}
+     * holds the neighbourhoods' largest variances.
+     */
+    private double[] pixelMse(double[] variance, double[] largest) {
+        double[] mse = neighbourhoods.mean(variance, largest, meanScratch);
+        double total = 0;
+        for (int p = 0; p < mse.length; p++) {
+            mse[p] /= 2.0 * done[p];
+            total += mse[p];
+        }
+        predictedMse = total / mse.length;
+        samplesPredicted = samples();
+        return mse;
+    }
+
+    /** Samples taken so far (both halves of every pixel). */
+    long samples() {
+        long total = 0;
+        for (int d : done) total += 2L * d;
+        return total;
+    }
+
+    /**
+     * Plans the next pass toward {@code target}: the fewest samples for which the convergence law (each pixel's MSE
+     * falling as {@code n^-alpha}, see {@link ConvergenceLaw}) predicts an image RMSE of {@code target}; returns the
+     * samples planned (0 when the target is met or no pixel may take more).
+     */
+    long planForError(double target) {
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
+        // Also kept for the report: when the target is met, no pass follows, and this is the prediction it prints.
+        double[] mse = pixelMse(variance, largest);
+        law.fit(mse, done);
+        if (predictedMse <= target * target) return 0;
+        double[] weight = weights(largest);
+        // Per noisy pixel, its MSE times done^alpha: times goal^-alpha, its MSE after the pass.
+        int[] noisy = noisyPixels(mse);
+        double[] powers = law.inversePowers(largestHalfGoal());
+        double[] scale = new double[noisy.length];
+        for (int k = 0; k < noisy.length; k++) scale[k] = mse[noisy[k]] / powers[done[noisy[k]]];
+        // The predicted MSE falls as lambda grows: find the least lambda that meets the target. When one pass cannot
+        // (every pixel at most GROWTH times its samples), the least lambda that comes within 2% of the best this pass
+        // can do: beyond it, only pixels that look flat would take more samples, and they change little.
+        double reachable = 1.02 * predictedMse(scale, noisy, powers, weight, Double.POSITIVE_INFINITY);
+        // A little below the target: a plan that lands on it exactly misses it by a hair half the time, and each
+        // further pass costs a plan for a handful of samples (the POV-Ray scene took up to seven passes that way).
+        double goalMse = Math.max(LANDING * target * target, reachable);
+        if (predictedMse(scale, noisy, powers, weight, 0) <= goalMse) {
+            // The pass can do no better than now (the noisy pixels are at their maximum), so every factor meets the
+            // goal, and the search below would halve its bound down to zero: a thousand sums of the law over the
+            // image (19 ms of an anti-aliasing render of 160 x 120 pixels held at 16 samples), to plan nothing.
+            law.remember(mse, done);
+            return setGoals(weight, 0);
+        }
+        double lo = 0, hi = 1;
+        while (predictedMse(scale, noisy, powers, weight, hi) > goalMse && hi < 1e30) hi *= 2;
+        // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
+        while (hi - lo > 1e-3 * hi) {
+            double mid = (lo + hi) / 2;
+            if (predictedMse(scale, noisy, powers, weight, mid) > goalMse) lo = mid;
+            else hi = mid;
+        }
+        law.remember(mse, done);
+        return setGoals(weight, hi);
+    }
+
+    /** The most samples per half any pixel may reach in the coming pass. */
+    private int largestHalfGoal() {
+        int most = 0;
+        for (int d : done) most = Math.max(most, d);
+        return (int) Math.min(maxSamples / 2, (long) GROWTH * most);
+    }
+
+    /**
+     * Plans the next pass to spend about {@code budget} more samples: first bringing every pixel toward the minimum
+     * (evenly, as far as the budget goes), then where the estimates are highest.
+     */
+    long planForSamples(long budget) {
+        if (budget <= 0) return 0;
+        int floor = minimum / 2;
+        long toFloor = 0;
+        for (int d : done) toFloor += 2L * Math.max(0, floor - d);
+        if (toFloor > 0) {
+            // Not every pixel has the minimum yet: raise the lowest first, as far as the budget goes, and by one
+            // sample per half at least: the pass stops at the budget's end (BudgetDeadline), and the time per
+            // sample measured so far may be the JIT's (a command line's first pass ran 20x slower than the next).
+            int lowest = Integer.MAX_VALUE;
+            for (int d : done) lowest = Math.min(lowest, d);
+            int level = floor;
+            while (level > lowest + 1 && cost(level) > budget) level--;
+            long planned = 0;
+            for (int p = 0; p < done.length; p++) {
+                goal[p] = Math.max(done[p], level);
+                planned += 2L * (goal[p] - done[p]);
+            }
+            return planned;
+        }
+        double[] weight = budgetWeights();
+        double lo = 0, hi = 1;
+        while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
+        while (hi - lo > 1e-3 * hi) {
+            double mid = (lo + hi) / 2;
+            if (extra(weight, mid) < budget) lo = mid;
+            else hi = mid;
+        }
+        return setGoals(weight, lo);
+    }
+
+    /**
+     * A time budget's share of new samples per pixel: the fourth root of its variance of one sample, the larger of its
+     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (in the array of the
+     * neighbourhoods' largest variances). Not the target's {@link #weights}, the square root of the neighbourhood's
+     * largest: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best
+     * share grows more slowly than its standard deviation; a pixel's estimate is noisy, and a root damps those that
+     * drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three pixels
+     * wide, where its mean keeps what the pixel's own estimate missed. At equal samples, 0-7% less error on every
+     * experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
+     * estimates, and took the same samples with these.
+     */
+    private double[] budgetWeights() {
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
+        double[] mean = neighbourhoods.mean(variance, largest, meanScratch);
+        double[] weight = largest;
+        double sum = 0;
+        for (int p = 0; p < weight.length; p++) {
+            weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));
+            sum += weight[p];
+        }
+        double floor = 0.05 * sum / weight.length;
+        for (int p = 0; p < weight.length; p++) weight[p] += floor;
+        return weight;
+    }
+
+    /** Samples that bring every pixel's halves to at least {@code level}. */
+    private long cost(int level) {
+        long sum = 0;
+        for (int d : done) sum += 2L * Math.max(0, level - d);
+        return sum;
+    }
+
+    /**
+     * Each pixel's share of new samples: the standard deviation of one sample, from the largest variance of its 3 x 3
+     * neighbourhood, plus a twentieth of the image's mean, so that no pixel is given up on for having looked flat
+     * to its first samples. Computed in place, in the array of the neighbourhoods' largest variances.
+     */
+    private static double[] weights(double[] largest) {
+        double[] weight = largest;
+        double mean = 0;
+        for (int p = 0; p < weight.length; p++) {
+            weight[p] = Math.sqrt(weight[p]);
+            mean += weight[p];
+        }
+        mean /= weight.length;
+        for (int p = 0; p < weight.length; p++) weight[p] += 0.05 * mean;
+        return weight;
+    }
+
+    /** Samples per half pixel {@code p} would reach for the allocation factor {@code lambda}. */
+    private int halfGoal(double[] weight, double lambda, int p) {
+        int max = Math.min(maxSamples / 2, GROWTH * done[p]);
+        double wanted = weight[p] > 0 ? Math.ceil(lambda * weight[p] / 2) : 0; // (infinity times 0 is NaN)
+        return (int) Math.max(done[p], Math.min(max, wanted));
+    }
+
+    /**
+     * The image MSE the convergence law predicts after planning with lambda: the noisy pixels' {@code scale} times
+     * {@code goal^-alpha} ({@code powers}), summed (the other pixels add exactly zero), over all pixels.
+     */
+    private double predictedMse(double[] scale, int[] noisy, double[] powers, double[] weight, double lambda) {
+        lawSums++;
+        double sum = 0;
+        for (int k = 0; k < noisy.length; k++) sum += scale[k] * powers[halfGoal(weight, lambda, noisy[k])];
+        return sum / done.length;
+    }
+
+    /**
+     * The pixels whose predicted MSE is not zero, in order. The search for the plan's lambda sums the predicted MSE
+     * some 25 times; where most of the image is converged (a soft shadow's lit ground and umbra), most terms are zero.
+     */
+    private static int[] noisyPixels(double[] mse) {
+        int count = 0;
+        for (double m : mse) if (m != 0) count++;
+        int[] noisy = new int[count];
+        for (int p = 0, k = 0; p < mse.length; p++) if (mse[p] != 0) noisy[k++] = p;
+        return noisy;
+    }
+
+    private long extra(double[] weight, double lambda) {
+        long sum = 0;
+        for (int p = 0; p < done.length; p++) sum += 2L * (halfGoal(weight, lambda, p) - done[p]);
+        return sum;
+    }
+
+    private long setGoals(double[] weight, double lambda) {
+        long planned = 0;
+        for (int p = 0; p < done.length; p++) {
+            goal[p] = halfGoal(weight, lambda, p);
+            planned += 2L * (goal[p] - done[p]);
+        }
+        return planned;
+    }
+}
