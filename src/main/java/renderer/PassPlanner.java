@@ -181,7 +181,7 @@ final class PassPlanner {
      * drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three pixels
      * wide, where its mean keeps what the pixel's own estimate missed. At equal samples, 0-7% less error on every
      * experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
-     * estimates, and took the same samples with these.
+     * estimates, and took about as many samples with these.
      */
     private double[] budgetWeights() {
         double[] largest = neighbourhoods.largest(variance, weightScratch);
