@@ -1,5 +1,7 @@
 package renderer;
 
+import java.util.function.DoublePredicate;
+
 /**
  * The plans of a {@link ProgressiveSampler}'s passes, and the prediction they follow: from each pixel's variance of one
  * sample, how many samples each pixel should reach in the coming pass ({@code goal}), toward a target error
@@ -30,8 +32,8 @@ final class PassPlanner {
     private double predictedMse;
 
     private long samplesPredicted = -1;
-    /** How many times the plans so far summed the law's prediction over the image (the cost of planning). */
-    long lawSums;
+    /** How many factors the plans' searches have tried so far, each a sum over the image (the cost of planning). */
+    long searchSteps;
 
     /** How the pixels' errors fall with their samples, fitted pass by pass. */
     private final ConvergenceLaw law;
@@ -111,23 +113,36 @@ final class PassPlanner {
         // A little below the target: a plan that lands on it exactly misses it by a hair half the time, and each
         // further pass costs a plan for a handful of samples (the POV-Ray scene took up to seven passes that way).
         double goalMse = Math.max(LANDING * target * target, reachable);
-        if (predictedMse(scale, noisy, powers, weight, 0) <= goalMse) {
-            // The pass can do no better than now (the noisy pixels are at their maximum), so every factor meets the
-            // goal, and the search below would halve its bound down to zero: a thousand sums of the law over the
-            // image (19 ms of an anti-aliasing render of 160 x 120 pixels held at 16 samples), to plan nothing.
-            law.remember(mse, done);
-            return setGoals(weight, 0);
+        double[] factors = search(lambda -> predictedMse(scale, noisy, powers, weight, lambda) <= goalMse);
+        law.remember(mse, done);
+        return setGoals(weight, factors[1]);
+    }
+
+    /**
+     * The allocation factors on either side of the least one that {@code suffices} (which holds from some factor on),
+     * to a thousandth: the goals are whole samples, so a finer factor changes next to nothing. Doubling from 1, then
+     * halving the interval. The ends are tried first: where 0 suffices (no pixel that would change the plan may take
+     * more) both are 0, where nothing does (every pixel at its maximum) both are infinite; the search would otherwise
+     * halve its bound down to zero, a thousand sums over the image (19 ms of an anti-aliasing render of 160 x 120
+     * pixels held at 16 samples), or double it to 10^30, about a hundred.
+     */
+    private double[] search(DoublePredicate suffices) {
+        DoublePredicate counted = lambda -> {
+            searchSteps++;
+            return suffices.test(lambda);
+        };
+        if (counted.test(0)) return new double[] {0, 0};
+        if (!counted.test(Double.POSITIVE_INFINITY)) {
+            return new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         }
         double lo = 0, hi = 1;
-        while (predictedMse(scale, noisy, powers, weight, hi) > goalMse && hi < 1e30) hi *= 2;
-        // To a thousandth: the goals are whole samples, so a finer lambda changes next to nothing.
+        while (!counted.test(hi) && hi < 1e30) hi *= 2;
         while (hi - lo > 1e-3 * hi) {
             double mid = (lo + hi) / 2;
-            if (predictedMse(scale, noisy, powers, weight, mid) > goalMse) lo = mid;
-            else hi = mid;
+            if (counted.test(mid)) hi = mid;
+            else lo = mid;
         }
-        law.remember(mse, done);
-        return setGoals(weight, hi);
+        return new double[] {lo, hi};
     }
 
     /** The most samples per half any pixel may reach in the coming pass. */
@@ -162,14 +177,8 @@ final class PassPlanner {
             return planned;
         }
         double[] weight = budgetWeights();
-        double lo = 0, hi = 1;
-        while (extra(weight, hi) < budget && hi < 1e30) hi *= 2;
-        while (hi - lo > 1e-3 * hi) {
-            double mid = (lo + hi) / 2;
-            if (extra(weight, mid) < budget) lo = mid;
-            else hi = mid;
-        }
-        return setGoals(weight, lo);
+        // The most samples that do not exceed the budget.
+        return setGoals(weight, search(lambda -> extra(weight, lambda) >= budget)[0]);
     }
 
     /**
@@ -187,14 +196,8 @@ final class PassPlanner {
         double[] largest = neighbourhoods.largest(variance, weightScratch);
         double[] mean = neighbourhoods.mean(variance, largest, meanScratch);
         double[] weight = largest;
-        double sum = 0;
-        for (int p = 0; p < weight.length; p++) {
-            weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));
-            sum += weight[p];
-        }
-        double floor = 0.05 * sum / weight.length;
-        for (int p = 0; p < weight.length; p++) weight[p] += floor;
-        return weight;
+        for (int p = 0; p < weight.length; p++) weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));
+        return withFloor(weight);
     }
 
     /** Samples that bring every pixel's halves to at least {@code level}. */
@@ -206,16 +209,20 @@ final class PassPlanner {
 
     /**
      * Each pixel's share of new samples: the standard deviation of one sample, from the largest variance of its 3 x 3
-     * neighbourhood, plus a twentieth of the image's mean, so that no pixel is given up on for having looked flat
-     * to its first samples. Computed in place, in the array of the neighbourhoods' largest variances.
+     * neighbourhood, with {@link #withFloor}. Computed in place, in the array of the neighbourhoods' largest variances.
      */
     private static double[] weights(double[] largest) {
-        double[] weight = largest;
+        for (int p = 0; p < largest.length; p++) largest[p] = Math.sqrt(largest[p]);
+        return withFloor(largest);
+    }
+
+    /**
+     * The shares plus a twentieth of their mean, in place, so that no pixel is given up on for having looked flat to
+     * its first samples.
+     */
+    private static double[] withFloor(double[] weight) {
         double mean = 0;
-        for (int p = 0; p < weight.length; p++) {
-            weight[p] = Math.sqrt(weight[p]);
-            mean += weight[p];
-        }
+        for (double w : weight) mean += w;
         mean /= weight.length;
         for (int p = 0; p < weight.length; p++) weight[p] += 0.05 * mean;
         return weight;
@@ -233,7 +240,6 @@ final class PassPlanner {
      * {@code goal^-alpha} ({@code powers}), summed (the other pixels add exactly zero), over all pixels.
      */
     private double predictedMse(double[] scale, int[] noisy, double[] powers, double[] weight, double lambda) {
-        lawSums++;
         double sum = 0;
         for (int k = 0; k < noisy.length; k++) sum += scale[k] * powers[halfGoal(weight, lambda, noisy[k])];
         return sum / done.length;

@@ -121,7 +121,8 @@ final class PixelSampler {
      * {@link #progressiveArea}.)
      */
     void progressiveSample(int x, int y, int half, int index, boolean again, TraceContext ctx) {
-        long path = beginProgressive(x, y, half, index, ctx);
+        beginProgressive(x, y, half, index, ctx);
+        long path = pathSeed(ctx.progressivePixelSeed, half, index);
         // After the first sample, the pinhole's ray (still in ctx.cameraRay) and its first hit are the same, and are
         // reused.
         if (again && pinholeCentre()) rayTracer.traceAgain(ctx.cameraRay, ctx, path);
@@ -177,7 +178,8 @@ final class PixelSampler {
      */
     boolean progressiveBatch(int x, int y, int half, int first, int count, TraceContext ctx) {
         if (count < 2 || !pinholeCentre()) return false;
-        long path = beginProgressive(x, y, half, first, ctx);
+        beginProgressive(x, y, half, first, ctx);
+        long path = pathSeed(ctx.progressivePixelSeed, half, first);
         boolean shaded = rayTracer.traceAgainBatch(ctx.cameraRay, ctx, path, count);
         ctx.sequenceIndex = -1;
         if (shaded) ctx.setColor(ctx.red * count, ctx.green * count, ctx.blue * count);
@@ -191,9 +193,9 @@ final class PixelSampler {
 
     /**
      * Points the context at sample {@code index} of half {@code half} of pixel (x, y): the pixel's and halves' seeds
-     * (per pixel, not per sample) and the half's sequence; returns the sample's path seed.
+     * (per pixel, not per sample) and the half's sequence (its path seed: {@link #pathSeed}).
      */
-    private long beginProgressive(int x, int y, int half, int index, TraceContext ctx) {
+    private void beginProgressive(int x, int y, int half, int index, TraceContext ctx) {
         int pixel = y * nX + x;
         if (ctx.progressivePixel != pixel) {
             long pixelSeed = SampleStream.mix(seed, pixel);
@@ -211,7 +213,6 @@ final class PixelSampler {
         }
         ctx.sequenceIndex = index;
         ctx.sequenceSeed = ctx.halfSeeds[half];
-        return pathSeed(ctx.progressivePixelSeed, half, index);
     }
 
     /** The path seed of sample {@code index} of half {@code half} of the pixel whose seed is {@code pixelSeed}. */

@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -48,5 +49,21 @@ class BudgetPlanTest {
         assertEquals(
                 4L * NX * NY,
                 afterFirstPass(ProgressiveSettings.timeBudget(10)).planner.planForSamples(1_000_000));
+    }
+
+    @Test
+    void aBudgetBeyondEveryPixelsMaximumPlansNothingInAFewSteps() {
+        // Minimum and maximum 16: after the pass to the minimum every pixel is at its maximum.
+        ProgressiveSampler sampler =
+                afterFirstPass(ProgressiveSettings.timeBudget(10).withSamples(16, 16));
+        assertEquals(12L * NX * NY, sampler.planner.planForSamples(1_000_000));
+        TraceContext ctx = new TraceContext();
+        for (int y = 0; y < NY; y++) for (int x = 0; x < NX; x++) sampler.advance(x, y, ctx);
+
+        long before = sampler.planner.searchSteps;
+        assertEquals(0, sampler.planner.planForSamples(1_000_000), "every pixel is at its maximum: nothing to plan");
+        // The search used to double its factor up to 10^30 first, about a hundred sums over the image.
+        long steps = sampler.planner.searchSteps - before;
+        assertTrue(steps <= 4, "the plan's search tried " + steps + " factors");
     }
 }

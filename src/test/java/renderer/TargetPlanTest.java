@@ -7,8 +7,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * A target's plan where no pixel may take more samples (each at its maximum) and the target is not met: it plans
- * nothing, and finds that out in a few sums of the law over the image. The search for the plan's factor used to halve
- * its upper bound until it reached zero, about a thousand sums, because every factor met the goal.
+ * nothing, and finds that out in a few sums over the image. The search for the plan's factor used to halve its upper
+ * bound until it reached zero, about a thousand sums, because every factor met the goal.
  */
 class TargetPlanTest {
     private static final int NX = 8, NY = 6;
@@ -26,6 +26,7 @@ class TargetPlanTest {
         assertTrue(sampler.predictedError() > 1e-6, "the target is not met: " + sampler.predictedError());
 
         assertEquals(0, sampler.planner.planForError(1e-6), "every pixel is at its maximum: nothing to plan");
-        assertTrue(sampler.planner.lawSums <= 4, "the plan summed the law " + sampler.planner.lawSums + " times");
+        long steps = sampler.planner.searchSteps;
+        assertTrue(steps <= 4, "the plan's search tried " + steps + " factors");
     }
 }
