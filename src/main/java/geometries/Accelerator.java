@@ -47,7 +47,7 @@ public final class Accelerator implements Intersectable {
         collectSeconds = (start - collectStart) * 1e-9;
         c.markSharedOutlineEdges();
         int n = c.count;
-        double[] boxes = useBvh && n > 0 ? c.boxes() : null;
+        float[] boxes = useBvh && n > 0 ? c.boxes() : null;
         long boxesDone = System.nanoTime();
         // Clear surfaces get a subtree of their own under the root, which shadow queries leave out.
         bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, c.clear) : null;

@@ -12,7 +12,7 @@ import java.util.concurrent.ForkJoinTask;
  * sequential build gives. {@link BVH} then collapses it into wide nodes.
  */
 final class BvhBuilder {
-    private final double[] primBounds;
+    private final float[] primBounds;
     final int[] index;
     private final int bins;
     private final int maxLeafSize;
@@ -31,7 +31,7 @@ final class BvhBuilder {
     int maxDepthReached;
 
     /**
-     * Whether the root divides the primitives into the two groups of {@link #BvhBuilder(double[], int, int, boolean,
+     * Whether the root divides the primitives into the two groups of {@link #BvhBuilder(float[], int, int, boolean,
      * boolean[])}: its first child holds the first group, its second child the second.
      */
     boolean grouped;
@@ -41,7 +41,7 @@ final class BvhBuilder {
      * the trees of the other primitives and of those (each built as usual), so a query that needs only the first
      * group can leave the second's subtree out.
      */
-    BvhBuilder(double[] primBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
+    BvhBuilder(float[] primBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize);
         int n = index.length;
         int split = firstOfSecondGroup(n, secondGroup);
@@ -116,7 +116,7 @@ final class BvhBuilder {
     }
 
     /** A builder over a shared {@code index}; {@link #allocate} gives it room for nodes. */
-    private BvhBuilder(double[] primBounds, int[] index, int bins, int maxLeafSize) {
+    private BvhBuilder(float[] primBounds, int[] index, int bins, int maxLeafSize) {
         this.primBounds = primBounds;
         this.index = index;
         this.bins = bins;

@@ -15,7 +15,7 @@ final class SahSplitter {
     /** Doubles in a range's summary: its primitives' box (min x, y, z, max x, y, z), then their centroids' box. */
     static final int SUMMARY = 12;
 
-    private final double[] primBounds;
+    private final float[] primBounds;
     private final int[] index;
     private final int bins;
     private final int maxLeafSize;
@@ -35,10 +35,10 @@ final class SahSplitter {
     int splitAxis;
 
     /**
-     * A splitter over primitives given by their boxes (six doubles each) and reached through {@code index}, which it
+     * A splitter over primitives given by their boxes (six floats each, rounded outward) and reached through {@code index}, which it
      * partitions.
      */
-    SahSplitter(double[] primBounds, int[] index, int bins, int maxLeafSize) {
+    SahSplitter(float[] primBounds, int[] index, int bins, int maxLeafSize) {
         this.primBounds = primBounds;
         this.index = index;
         this.bins = bins;
@@ -64,10 +64,12 @@ final class SahSplitter {
 
     /**
      * Centroid of primitive {@code p} on {@code axis}, computed where needed rather than stored: the box it
-     * comes from is read anyway, and a stored copy cost another cache miss per primitive and pass.
+     * comes from is read anyway, and a stored copy cost another cache miss per primitive and pass. The sum is taken
+     * in double, as the binning takes it: in float it would round differently, and a primitive binned on one side
+     * could be partitioned to the other.
      */
     private double centroid(int p, int axis) {
-        return 0.5 * (primBounds[6 * p + axis] + primBounds[6 * p + 3 + axis]);
+        return 0.5 * ((double) primBounds[6 * p + axis] + primBounds[6 * p + 3 + axis]);
     }
 
     /** Writes the summary of {@code [start, end)} to {@code out[at..at+SUMMARY)}: one pass over its primitives. */
@@ -274,7 +276,7 @@ final class SahSplitter {
         x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
         int leftCount = 0;
         double bestCost = Double.POSITIVE_INFINITY;
-        int bestSplit = -1;
+        int bestSplit = -1, bestLeftCount = 0;
         for (int u = 0; u < n - 1; u++) {
             int bin = used[u], o = SUMMARY * bin;
             x0 = Math.min(x0, binSummaries[o]);
@@ -289,6 +291,7 @@ final class SahSplitter {
             if (cost < bestCost) {
                 bestCost = cost;
                 bestSplit = bin;
+                bestLeftCount = leftCount;
             }
         }
         double splitCost = BVH.TRAVERSAL_COST + (nodeArea > 0 ? bestCost / nodeArea : 0);
@@ -304,13 +307,23 @@ final class SahSplitter {
         for (int u = 0; u < n; u++) {
             merge(binSummaries, SUMMARY * used[u], childSummaries, used[u] <= bestSplit ? left : right);
         }
+        // binOf gives at most bestSplit exactly where (c - lo) * scale is not at least bestSplit + 1: conversion
+        // truncates toward zero, the clamps send what lies below 0 to bin 0 and what lies from bins on to the last bin
+        // (never left of a split), and NaN (infinite boxes) converts to bin 0. The same sides, without the conversion.
+        double leftLimit = bestSplit + 1;
         int i = start;
         for (int k = start; k < end; k++) {
             int p = index[k];
-            int goesLeft = binOf(centroid(p, axis), lo, scale) <= bestSplit ? 1 : 0;
+            int goesLeft = (centroid(p, axis) - lo) * scale >= leftLimit ? 0 : 1;
             index[k] = index[i];
             index[i] = p;
             i += goesLeft;
+        }
+        // The children's boxes come from the bins, so a partition that disagreed with them would make boxes that miss
+        // their primitives (and, with a side left empty, a tree that never ends): refuse rather than build it.
+        if (i - start != bestLeftCount) {
+            throw new IllegalStateException("BVH build: the partition put " + (i - start) + " primitives left of bin "
+                    + bestSplit + ", its bins counted " + bestLeftCount);
         }
         return i;
     }

@@ -25,6 +25,8 @@ class BVHTest {
         Hits.assertRejected(() -> BVH.build(one, 16, 0), "maxLeafSize", "0");
         Hits.assertRejected(() -> BVH.build(one, 16, 65), "maxLeafSize", "65");
         Hits.assertRejected(() -> BVH.build(new double[] {0, 0, 0, 1, 1}, 16, 4), "6 values");
+        // Empty by less than a float's step: the float boxes the builder reads would not show it.
+        Hits.assertRejected(() -> BVH.build(new double[] {1 + 1e-12, 0, 0, 1, 1, 1}, 16, 4), "empty", "primitive 0");
         assertThrows(IllegalArgumentException.class, () -> BVH.build(one, 16, 4).node(1));
     }
 
@@ -70,6 +72,42 @@ class BVHTest {
         assertEquals(bvh.binaryNodeCount(), 2 * bvh.leafCount() - 1, "collapsed from a binary tree");
         // Every 4-wide node absorbs at least one binary interior node.
         assertTrue(bvh.nodeCount() - bvh.leafCount() <= bvh.leafCount() - 1, "fewer interior nodes than binary");
+    }
+
+    /**
+     * The builder reads the boxes rounded outward to floats: far from the origin they lie on float's coarse grid, and
+     * beyond float's range their bounds are infinite. Every primitive still lands in exactly one leaf that holds its
+     * box: a primitive binned on one side and partitioned to the other would leave a child empty (the build failed on
+     * its node arrays when the partition summed a box's float bounds in float and the binning in double).
+     */
+    @ParameterizedTest(name = "at {0} + [0, {1}], sizes up to {2}, parallel {3}")
+    @MethodSource("extremeBoxes")
+    void boxesOnFloatsCoarseGridOrBeyondItsRangeStillMakeATree(
+            double offset, double spread, double size, boolean parallel) {
+        Random random = new Random(Double.hashCode(offset) ^ Double.hashCode(spread));
+        int n = 3000;
+        double[] boxes = new double[6 * n];
+        for (int i = 0; i < n; i++) {
+            for (int a = 0; a < 3; a++) {
+                double lo = offset + random.nextDouble() * spread;
+                boxes[6 * i + a] = lo;
+                boxes[6 * i + 3 + a] = lo + random.nextDouble() * size;
+            }
+        }
+        BVH bvh = BVH.build(boxes, 16, 4, parallel);
+        boolean[] seen = new boolean[n];
+        int[] leafPrimitives = {0};
+        check(bvh, 0, boxes, seen, leafPrimitives, 4, 0);
+        assertEquals(n, leafPrimitives[0], "leaves hold every primitive once");
+    }
+
+    static Stream<Arguments> extremeBoxes() {
+        return Stream.of(
+                Arguments.of(1e6, 10.0, 0.1, false),
+                Arguments.of(-3e7, 100.0, 1.0, true),
+                Arguments.of(0.0, 1e39, 1e38, false),
+                Arguments.of(-1e300, 1e300, 1e299, false),
+                Arguments.of(-1e300, 1e300, 1e299, true));
     }
 
     /** Walks the subtree at {@code node}; returns the index after it (depth-first layout). */
