@@ -69,23 +69,45 @@ final class PrimitiveCollector {
         }
     }
 
+    /**
+     * A mesh's triangles with area, in order. A large mesh (a million triangles pass through here) is copied on all
+     * cores: which triangles have area first, then each one's copy to its place, both from its own vertices alone.
+     */
     private void collectMesh(Mesh mesh) {
-        boolean transmit = mesh.getMaterial().isTransparent();
-        int[] idx = mesh.indices;
-        int triangles = mesh.triangleCount();
-        ensureCapacity(count + triangles);
-        for (int i = 0; i < triangles; i++) {
-            if (mesh.isDegenerate(i)) continue; // never hit; keeps zero-area boxes out of the tree
-            addTriangle(
-                    mesh.vertices,
-                    3 * idx[3 * i],
-                    3 * idx[3 * i + 1],
-                    3 * idx[3 * i + 2],
-                    mesh,
-                    i,
-                    WatertightTriangle.ALL_EDGES_SHARED,
-                    transmit);
+        int n = mesh.triangleCount();
+        boolean parallel = n >= PARALLEL_BOXES;
+        boolean[] hasArea = new boolean[n];
+        // A degenerate triangle is never hit; leaving it out keeps zero-area boxes out of the tree.
+        BuildPool.forEach(n, parallel, i -> hasArea[i] = !mesh.isDegenerate(i));
+        int kept = 0;
+        for (boolean h : hasArea) if (h) kept++;
+        // Each kept triangle's place among the kept ones: its own index unless some were left out.
+        int[] place = null;
+        if (kept < n) {
+            place = new int[n];
+            for (int i = 0, k = 0; i < n; i++) if (hasArea[i]) place[i] = k++;
         }
+        ensureCapacity(count + kept);
+        int first = count, owner = kept > 0 ? ownerSlot(mesh) : -1;
+        boolean transmit = mesh.getMaterial().isTransparent(), isClear = CompiledPrimitives.isClear(mesh);
+        int[] idx = mesh.indices, places = place;
+        double[] v = mesh.vertices, out = triangles;
+        BuildPool.forEach(n, parallel, i -> {
+            if (!hasArea[i]) return;
+            int k = first + (places == null ? i : places[i]), o = 9 * k;
+            for (int corner = 0; corner < 3; corner++) {
+                int from = 3 * idx[3 * i + corner];
+                out[o + 3 * corner] = v[from];
+                out[o + 3 * corner + 1] = v[from + 1];
+                out[o + 3 * corner + 2] = v[from + 2];
+            }
+            shared[k] = WatertightTriangle.ALL_EDGES_SHARED;
+            parts[k] = i;
+            owners[k] = owner;
+            mayTransmit[k] = transmit;
+            clear[k] = isClear;
+        });
+        count += kept;
     }
 
     private int addTriangle(
