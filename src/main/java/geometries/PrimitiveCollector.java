@@ -15,10 +15,11 @@ import java.util.Map;
 final class PrimitiveCollector {
     /**
      * Slack on primitive boxes, relative to the box's largest magnitude, so that rounding in the kernels never reports
-     * a hit just outside a box: 2^-23, with two of float's smallest steps (2^-148) added, so that the nearest float
-     * (rounding moves by at most half a step, 2^-24 relative or 2^-150) still lies outside the padded box by 2^-24 of
-     * that magnitude. The nearest float costs no branch; rounding outward exactly (one in two values a step further)
-     * made the boxes of the 1M heightfield about 3x slower (best of 25: 0.018-0.020 s against 0.006 s).
+     * a hit just outside a box. The padded bounds are then rounded to the nearest float, which moves them by at most
+     * half a float step (2^-24 of the magnitude, or 2^-150 near zero): a pad of 2^-23 plus 2^-148 leaves at least 2^-24
+     * outside the box, far more than the kernels need. The nearest float costs no branch; rounding outward exactly
+     * (one in two values a step further) made the boxes of the 1M heightfield about 3x slower (best of 25:
+     * 0.018-0.020 s against 0.006 s).
      */
     private static final double BOX_PAD = 0x1p-23;
 
@@ -175,8 +176,8 @@ final class PrimitiveCollector {
     }
 
     /**
-     * Six floats per primitive: its box padded slightly outward, then rounded outward to floats (what the BVH's
-     * nodes hold in the end, at half the bytes of doubles for the build to read).
+     * Six floats per primitive: its box padded outward ({@link #BOX_PAD}), then rounded to the nearest float (the BVH's
+     * nodes hold floats in the end; half the bytes of doubles for the build to read).
      */
     float[] boxes() {
         float[] boxes = new float[6 * count];
@@ -188,7 +189,7 @@ final class PrimitiveCollector {
     /** Primitives from which {@link #boxes} runs in parallel. */
     private static final int PARALLEL_BOXES = 1 << 16;
 
-    /** Writes primitive {@code k}'s padded box, rounded outward, to {@code boxes[6k..6k+6)}. */
+    /** Writes primitive {@code k}'s padded float box to {@code boxes[6k..6k+6)}. */
     private void box(int k, float[] boxes) {
         int b = 6 * k;
         BoundingBox box = objectBoxes[k];

@@ -35,8 +35,8 @@ final class SahSplitter {
     int splitAxis;
 
     /**
-     * A splitter over primitives given by their boxes (six floats each, rounded outward) and reached through {@code index}, which it
-     * partitions.
+     * A splitter over primitives given by their boxes (six floats each, {@link PrimitiveCollector#boxes}) and
+     * reached through {@code index}, which it partitions.
      */
     SahSplitter(float[] primBounds, int[] index, int bins, int maxLeafSize) {
         this.primBounds = primBounds;
