@@ -91,7 +91,7 @@ final class CompiledPrimitives {
         mayTransmit[k] = c.mayTransmit[i];
         clear[k] = c.clear[i];
         if (objects[k] == null) {
-            System.arraycopy(c.triangles, 9 * i, triangles, 9 * k, 9);
+            c.copyTriangle(i, triangles, 9 * k);
             info[r + EDGES] = c.shared[i];
             info[r + OWNER] = c.owners[i];
             info[r + PART] = c.parts[i];

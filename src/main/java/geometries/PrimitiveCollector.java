@@ -1,16 +1,17 @@
 package geometries;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
- * Gathers the primitives of a geometry tree for {@link Accelerator}: triangles of polygons (fans) and meshes into
- * one coordinate array, other bounded shapes as objects, unbounded ones apart, and the outline edges that lone
- * triangles and polygons share exactly (made watertight). Per-primitive arrays grow by doubling, since a
- * million-triangle mesh passes through here.
+ * Gathers the primitives of a geometry tree for {@link Accelerator}: triangles of polygons (fans) and meshes, each
+ * known by its owner and part (its vertices are read from there, not copied: {@link #copyTriangle}), other bounded
+ * shapes as objects, unbounded ones apart, and the outline edges that lone triangles and polygons share exactly (made
+ * watertight). Per-primitive arrays grow by doubling, since a million-triangle mesh passes through here.
  */
 final class PrimitiveCollector {
     /**
@@ -24,7 +25,6 @@ final class PrimitiveCollector {
     private static final double BOX_PAD = 0x1p-23;
 
     int count;
-    double[] triangles = new double[9 * 64];
     int[] shared = new int[64];
     int[] parts = new int[64];
     /** Each triangle's owner, as its slot in {@link #ownerTable}. */
@@ -60,8 +60,7 @@ final class PrimitiveCollector {
         int fans = polygon.fanCount();
         boolean transmit = polygon.getMaterial().isTransparent();
         for (int i = 0; i < fans; i++) {
-            int k = addTriangle(
-                    polygon.fan, 9 * i, 9 * i + 3, 9 * i + 6, polygon, i, polygon.fanSharedEdges[i], transmit);
+            int k = addTriangle(polygon, i, polygon.fanSharedEdges[i], transmit);
             double[] f = polygon.fan;
             int o = 9 * i;
             outline(k, WatertightTriangle.EDGE_12, f, o + 3, o + 6);
@@ -71,8 +70,9 @@ final class PrimitiveCollector {
     }
 
     /**
-     * A mesh's triangles with area, in order. A large mesh (a million triangles pass through here) is copied on all
-     * cores: which triangles have area first, then each one's copy to its place, both from its own vertices alone.
+     * A mesh's triangles with area, in order, each known by its owner and part (its index in the mesh): its vertices
+     * stay in the mesh until {@link #copyTriangle} (a million-triangle mesh passes through here). A large mesh is
+     * collected on all cores: which triangles have area first, then each one's record at its place.
      */
     private void collectMesh(Mesh mesh) {
         int n = mesh.triangleCount();
@@ -91,17 +91,10 @@ final class PrimitiveCollector {
         ensureCapacity(count + kept);
         int first = count, owner = kept > 0 ? ownerSlot(mesh) : -1;
         boolean transmit = mesh.getMaterial().isTransparent(), isClear = CompiledPrimitives.isClear(mesh);
-        int[] idx = mesh.indices, places = place;
-        double[] v = mesh.vertices, out = triangles;
+        int[] places = place;
         BuildPool.forEach(n, parallel, i -> {
             if (!hasArea[i]) return;
-            int k = first + (places == null ? i : places[i]), o = 9 * k;
-            for (int corner = 0; corner < 3; corner++) {
-                int from = 3 * idx[3 * i + corner];
-                out[o + 3 * corner] = v[from];
-                out[o + 3 * corner + 1] = v[from + 1];
-                out[o + 3 * corner + 2] = v[from + 2];
-            }
+            int k = first + (places == null ? i : places[i]);
             shared[k] = WatertightTriangle.ALL_EDGES_SHARED;
             parts[k] = i;
             owners[k] = owner;
@@ -111,13 +104,9 @@ final class PrimitiveCollector {
         count += kept;
     }
 
-    private int addTriangle(
-            double[] v, int a, int b, int c, Geometry owner, int part, int sharedFlags, boolean transmit) {
+    /** Fan triangle {@code part} of a polygon, known by its owner and part, as a mesh's triangles are. */
+    private int addTriangle(Polygon owner, int part, int sharedFlags, boolean transmit) {
         ensureCapacity(count + 1);
-        int o = 9 * count;
-        System.arraycopy(v, a, triangles, o, 3);
-        System.arraycopy(v, b, triangles, o + 3, 3);
-        System.arraycopy(v, c, triangles, o + 6, 3);
         shared[count] = sharedFlags;
         parts[count] = part;
         owners[count] = ownerSlot(owner);
@@ -135,8 +124,30 @@ final class PrimitiveCollector {
         if (last >= 0 && ownerTable.get(last) == owner) return last;
         return ownerSlots.computeIfAbsent(owner, o -> {
             ownerTable.add(o);
+            if (ownerTable.size() > ownerArray.length) ownerArray = Arrays.copyOf(ownerArray, 2 * ownerArray.length);
+            ownerArray[ownerTable.size() - 1] = o;
             return ownerTable.size() - 1;
         });
+    }
+
+    /** {@link #ownerTable} as an array, for the reads of {@link #copyTriangle} and {@link #boxes} on all cores. */
+    private Geometry[] ownerArray = new Geometry[8];
+
+    /** The coordinates triangle primitive {@code k}'s vertices are read from: its mesh's vertices or polygon's fan. */
+    private double[] vertexArray(int k) {
+        return ownerArray[owners[k]] instanceof Mesh mesh ? mesh.vertices : ((Polygon) ownerArray[owners[k]]).fan;
+    }
+
+    /** Where corner {@code corner} (0, 1 or 2) of triangle primitive {@code k} starts in {@link #vertexArray}. */
+    private int cornerAt(int k, int corner) {
+        int part = parts[k];
+        return ownerArray[owners[k]] instanceof Mesh mesh ? 3 * mesh.indices[3 * part + corner] : 9 * part + 3 * corner;
+    }
+
+    /** Writes triangle primitive {@code k}'s nine coordinates (three vertices) to {@code out[o..o+9)}. */
+    void copyTriangle(int k, double[] out, int o) {
+        double[] v = vertexArray(k);
+        for (int corner = 0; corner < 3; corner++) System.arraycopy(v, cornerAt(k, corner), out, o + 3 * corner, 3);
     }
 
     private void addObject(Intersectable g) {
@@ -152,14 +163,13 @@ final class PrimitiveCollector {
     private void ensureCapacity(int needed) {
         if (needed <= shared.length) return;
         int capacity = Math.max(needed, 2 * shared.length);
-        triangles = java.util.Arrays.copyOf(triangles, 9 * capacity);
-        shared = java.util.Arrays.copyOf(shared, capacity);
-        parts = java.util.Arrays.copyOf(parts, capacity);
-        owners = java.util.Arrays.copyOf(owners, capacity);
-        objects = java.util.Arrays.copyOf(objects, capacity);
-        mayTransmit = java.util.Arrays.copyOf(mayTransmit, capacity);
-        clear = java.util.Arrays.copyOf(clear, capacity);
-        objectBoxes = java.util.Arrays.copyOf(objectBoxes, capacity);
+        shared = Arrays.copyOf(shared, capacity);
+        parts = Arrays.copyOf(parts, capacity);
+        owners = Arrays.copyOf(owners, capacity);
+        objects = Arrays.copyOf(objects, capacity);
+        mayTransmit = Arrays.copyOf(mayTransmit, capacity);
+        clear = Arrays.copyOf(clear, capacity);
+        objectBoxes = Arrays.copyOf(objectBoxes, capacity);
     }
 
     private void outline(int primitive, int edgeFlag, double[] v, int from, int to) {
@@ -193,21 +203,26 @@ final class PrimitiveCollector {
     private void box(int k, float[] boxes) {
         int b = 6 * k;
         BoundingBox box = objectBoxes[k];
-        for (int a = 0; a < 3; a++) {
-            double lo, hi;
-            if (box == null) {
-                int o = 9 * k + a;
-                lo = Math.min(triangles[o], Math.min(triangles[o + 3], triangles[o + 6]));
-                hi = Math.max(triangles[o], Math.max(triangles[o + 3], triangles[o + 6]));
-            } else {
-                lo = a == 0 ? box.minX : a == 1 ? box.minY : box.minZ;
-                hi = a == 0 ? box.maxX : a == 1 ? box.maxY : box.maxZ;
-            }
-            double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + 0x1p-148;
-            // Beyond float's range the nearest float is infinite: a box's near side stays at float's largest value.
-            boxes[b + a] = Math.min((float) (lo - pad), Float.MAX_VALUE);
-            boxes[b + 3 + a] = Math.max((float) (hi + pad), -Float.MAX_VALUE);
+        if (box != null) {
+            padded(boxes, b, 0, box.minX, box.maxX);
+            padded(boxes, b, 1, box.minY, box.maxY);
+            padded(boxes, b, 2, box.minZ, box.maxZ);
+            return;
         }
+        double[] v = vertexArray(k);
+        int c0 = cornerAt(k, 0), c1 = cornerAt(k, 1), c2 = cornerAt(k, 2);
+        for (int a = 0; a < 3; a++) {
+            double x = v[c0 + a], y = v[c1 + a], z = v[c2 + a];
+            padded(boxes, b, a, Math.min(x, Math.min(y, z)), Math.max(x, Math.max(y, z)));
+        }
+    }
+
+    /** Writes the bounds {@code lo, hi} on axis {@code a} of the box at {@code boxes[b..]}, padded, as floats. */
+    private static void padded(float[] boxes, int b, int a, double lo, double hi) {
+        double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + 0x1p-148;
+        // Beyond float's range the nearest float is infinite: a box's near side stays at float's largest value.
+        boxes[b + a] = Math.min((float) (lo - pad), Float.MAX_VALUE);
+        boxes[b + 3 + a] = Math.max((float) (hi + pad), -Float.MAX_VALUE);
     }
 
     /** An undirected edge between two exact points, for finding shared outline edges. */

@@ -39,11 +39,13 @@ class PrimitiveBoxesTest {
             collector.collect(new Triangle(v[0], v[1], v[2]));
         }
         float[] boxes = collector.boxes();
+        double[] triangle = new double[9];
         for (int p = 0; p < n; p++) {
+            collector.copyTriangle(p, triangle, 0);
             for (int a = 0; a < 3; a++) {
                 double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
                 for (int k = 0; k < 3; k++) {
-                    double c = collector.triangles[9 * p + 3 * k + a];
+                    double c = triangle[3 * k + a];
                     lo = Math.min(lo, c);
                     hi = Math.max(hi, c);
                 }

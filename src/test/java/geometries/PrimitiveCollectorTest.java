@@ -7,7 +7,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * A mesh's triangles with area reach the collector in order, each with its own vertices and its index in the mesh
- * as its part, also where a large mesh is copied on all cores and some of its triangles have no area.
+ * as its part, also where a large mesh is collected on all cores and some of its triangles have no area.
  */
 class PrimitiveCollectorTest {
 
@@ -27,9 +27,13 @@ class PrimitiveCollectorTest {
                 new primitives.Point(0, 0, 9), new primitives.Point(1, 0, 9), new primitives.Point(0, 1, 9)));
         collector.collect(mesh);
 
+        double[] triangle = new double[9];
+        collector.copyTriangle(0, triangle, 0);
+        assertEquals(9, triangle[2], "the lone triangle's own vertices");
         int k = 1; // after the lone triangle
         for (int i = 0; i < n; i++) {
             if (mesh.isDegenerate(i)) continue;
+            collector.copyTriangle(k, triangle, 0);
             assertEquals(i, collector.parts[k], "part of primitive " + k);
             assertEquals(WatertightTriangle.ALL_EDGES_SHARED, collector.shared[k]);
             assertEquals(collector.owners[1], collector.owners[k], "one owner for the mesh");
@@ -37,7 +41,7 @@ class PrimitiveCollectorTest {
                 for (int a = 0; a < 3; a++) {
                     assertEquals(
                             mesh.vertices[3 * indices[3 * i + corner] + a],
-                            collector.triangles[9 * k + 3 * corner + a],
+                            triangle[3 * corner + a],
                             "triangle " + i + " corner " + corner);
                 }
             }
