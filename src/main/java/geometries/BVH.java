@@ -149,9 +149,10 @@ public final class BVH {
     }
 
     /**
-     * {@link #build(double[], int, int, boolean, boolean[])} over boxes already rounded outward to floats, as
-     * {@link PrimitiveCollector#boxes} gives them: the builder reads nothing else, and half the bytes of doubles per
-     * primitive and pass made the 1M heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov).
+     * {@link #build(double[], int, int, boolean, boolean[])} over boxes already in floats, each holding its primitive
+     * ({@link #roundedOutward}, or padded as {@link PrimitiveCollector#boxes} gives them): the builder reads nothing
+     * else, and half the bytes of doubles per primitive and pass made the 1M heightfield's binary tree about 1.05-1.1x
+     * faster (docs/BENCHMARKS.md, 27 Nov).
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);

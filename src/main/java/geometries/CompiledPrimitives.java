@@ -66,7 +66,7 @@ final class CompiledPrimitives {
         searchesTree = bvh != null && n > 1;
         triangles = new double[9 * n];
         info = new int[INFO * n];
-        geometries = c.ownerTable.toArray(new Geometry[0]);
+        geometries = c.ownerTable();
         objects = new Intersectable[n];
         mayTransmit = new boolean[n];
         clear = new boolean[n];

@@ -27,7 +27,7 @@ final class PrimitiveCollector {
     int count;
     int[] shared = new int[64];
     int[] parts = new int[64];
-    /** Each triangle's owner, as its slot in {@link #ownerTable}. */
+    /** Each triangle's owner, as its slot in {@link #ownerTable()}. */
     int[] owners = new int[64];
     // Plain arrays grown by doubling, like the ones above: a million-triangle mesh passes through here.
     Intersectable[] objects = new Intersectable[64];
@@ -35,8 +35,13 @@ final class PrimitiveCollector {
     boolean[] clear = new boolean[64];
     BoundingBox[] objectBoxes = new BoundingBox[64];
     final List<Intersectable> unbounded = new ArrayList<>();
-    /** The geometries that own triangles, each once, in the order first met. */
-    final List<Geometry> ownerTable = new ArrayList<>();
+    /**
+     * The geometries that own triangles, each once, in the order first met: the first {@link #ownerCount} slots, read
+     * on all cores by {@link #copyTriangle} and {@link #boxes}.
+     */
+    private Geometry[] ownerTable = new Geometry[8];
+
+    private int ownerCount;
 
     private final Map<Geometry, Integer> ownerSlots = new IdentityHashMap<>();
     /** Outline edges of lone triangles and polygons: edge key to (primitive, edge flag) pairs. */
@@ -76,25 +81,20 @@ final class PrimitiveCollector {
      */
     private void collectMesh(Mesh mesh) {
         int n = mesh.triangleCount();
-        boolean parallel = n >= PARALLEL_BOXES;
+        boolean parallel = n >= PARALLEL;
         boolean[] hasArea = new boolean[n];
         // A degenerate triangle is never hit; leaving it out keeps zero-area boxes out of the tree.
         BuildPool.forEach(n, parallel, i -> hasArea[i] = !mesh.isDegenerate(i));
         int kept = 0;
         for (boolean h : hasArea) if (h) kept++;
         // Each kept triangle's place among the kept ones: its own index unless some were left out.
-        int[] place = null;
-        if (kept < n) {
-            place = new int[n];
-            for (int i = 0, k = 0; i < n; i++) if (hasArea[i]) place[i] = k++;
-        }
+        int[] place = kept < n ? places(hasArea) : null;
         ensureCapacity(count + kept);
         int first = count, owner = kept > 0 ? ownerSlot(mesh) : -1;
         boolean transmit = mesh.getMaterial().isTransparent(), isClear = CompiledPrimitives.isClear(mesh);
-        int[] places = place;
         BuildPool.forEach(n, parallel, i -> {
             if (!hasArea[i]) return;
-            int k = first + (places == null ? i : places[i]);
+            int k = first + (place == null ? i : place[i]);
             shared[k] = WatertightTriangle.ALL_EDGES_SHARED;
             parts[k] = i;
             owners[k] = owner;
@@ -102,6 +102,13 @@ final class PrimitiveCollector {
             clear[k] = isClear;
         });
         count += kept;
+    }
+
+    /** Where each kept triangle goes among the kept ones, in order. */
+    private static int[] places(boolean[] kept) {
+        int[] place = new int[kept.length];
+        for (int i = 0, k = 0; i < kept.length; i++) if (kept[i]) place[i] = k++;
+        return place;
     }
 
     /** Fan triangle {@code part} of a polygon, known by its owner and part, as a mesh's triangles are. */
@@ -120,28 +127,28 @@ final class PrimitiveCollector {
      * after the other, so the last slot is tried first).
      */
     private int ownerSlot(Geometry owner) {
-        int last = ownerTable.size() - 1;
-        if (last >= 0 && ownerTable.get(last) == owner) return last;
+        if (ownerCount > 0 && ownerTable[ownerCount - 1] == owner) return ownerCount - 1;
         return ownerSlots.computeIfAbsent(owner, o -> {
-            ownerTable.add(o);
-            if (ownerTable.size() > ownerArray.length) ownerArray = Arrays.copyOf(ownerArray, 2 * ownerArray.length);
-            ownerArray[ownerTable.size() - 1] = o;
-            return ownerTable.size() - 1;
+            if (ownerCount == ownerTable.length) ownerTable = Arrays.copyOf(ownerTable, 2 * ownerCount);
+            ownerTable[ownerCount] = o;
+            return ownerCount++;
         });
     }
 
-    /** {@link #ownerTable} as an array, for the reads of {@link #copyTriangle} and {@link #boxes} on all cores. */
-    private Geometry[] ownerArray = new Geometry[8];
+    /** The geometries that own triangles, each once, in the order first met (a slot's owner at its index). */
+    Geometry[] ownerTable() {
+        return Arrays.copyOf(ownerTable, ownerCount);
+    }
 
     /** The coordinates triangle primitive {@code k}'s vertices are read from: its mesh's vertices or polygon's fan. */
     private double[] vertexArray(int k) {
-        return ownerArray[owners[k]] instanceof Mesh mesh ? mesh.vertices : ((Polygon) ownerArray[owners[k]]).fan;
+        return ownerTable[owners[k]] instanceof Mesh mesh ? mesh.vertices : ((Polygon) ownerTable[owners[k]]).fan;
     }
 
     /** Where corner {@code corner} (0, 1 or 2) of triangle primitive {@code k} starts in {@link #vertexArray}. */
     private int cornerAt(int k, int corner) {
         int part = parts[k];
-        return ownerArray[owners[k]] instanceof Mesh mesh ? 3 * mesh.indices[3 * part + corner] : 9 * part + 3 * corner;
+        return ownerTable[owners[k]] instanceof Mesh mesh ? 3 * mesh.indices[3 * part + corner] : 9 * part + 3 * corner;
     }
 
     /** Writes triangle primitive {@code k}'s nine coordinates (three vertices) to {@code out[o..o+9)}. */
@@ -192,12 +199,12 @@ final class PrimitiveCollector {
     float[] boxes() {
         float[] boxes = new float[6 * count];
         // Each box from its own primitive alone: a large mesh's on all cores.
-        BuildPool.forEach(count, count >= PARALLEL_BOXES, k -> box(k, boxes));
+        BuildPool.forEach(count, count >= PARALLEL, k -> box(k, boxes));
         return boxes;
     }
 
-    /** Primitives from which {@link #boxes} runs in parallel. */
-    private static final int PARALLEL_BOXES = 1 << 16;
+    /** Primitives from which a mesh is collected and {@link #boxes} made on all cores. */
+    private static final int PARALLEL = 1 << 16;
 
     /** Writes primitive {@code k}'s padded float box to {@code boxes[6k..6k+6)}. */
     private void box(int k, float[] boxes) {

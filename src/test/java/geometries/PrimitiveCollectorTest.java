@@ -14,7 +14,7 @@ class PrimitiveCollectorTest {
     @ParameterizedTest(name = "every {0}th triangle degenerate")
     @ValueSource(ints = {0, 97, 2})
     void aMeshsTrianglesWithAreaArriveInOrder(int degenerateEvery) {
-        // 80,000 triangles: above the size from which the collector copies on all cores.
+        // 80,000 triangles: above the size from which the collector works on all cores.
         Mesh grid = Meshes.heightfield(200);
         int[] indices = grid.indices.clone();
         int n = indices.length / 3;
