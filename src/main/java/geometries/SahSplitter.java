@@ -190,7 +190,30 @@ final class SahSplitter {
         }
         double nodeArea = surfaceArea(
                 summary[at], summary[at + 1], summary[at + 2], summary[at + 3], summary[at + 4], summary[at + 5]);
+        if (count <= maxLeafSize && leafIsCheaper(start, end, nodeArea, count)) return -1;
         return sahPartition(start, end, depth, axis, lo, extent, nodeArea, count);
+    }
+
+    /**
+     * Whether a leaf surely costs no more than any split of a node small enough to be one, known without binning it
+     * (half the nodes of a mesh's tree are such leaves): each primitive's box lies in its child's, so a split costs at
+     * least the traversal cost plus the sum of the primitives' areas over the node's. Rounding is monotone, so the
+     * binned sweep's areas are at least these; the margin covers the rounding of the sum. The tree is the same.
+     */
+    private boolean leafIsCheaper(int start, int end, double nodeArea, int count) {
+        if (!(nodeArea > 0)) return false;
+        double sum = 0;
+        for (int k = start; k < end; k++) {
+            int o = 6 * index[k];
+            sum += surfaceArea(
+                    primBounds[o],
+                    primBounds[o + 1],
+                    primBounds[o + 2],
+                    primBounds[o + 3],
+                    primBounds[o + 4],
+                    primBounds[o + 5]);
+        }
+        return BVH.TRAVERSAL_COST + sum / nodeArea >= count * (1 + 1e-9);
     }
 
     /** Splits {@code [start, end)} by count where no bin boundary separates it; summarizes both halves. */

@@ -42,6 +42,22 @@ class BVHTest {
         assertEquals(0, bvh.primitiveAt(0));
     }
 
+    /**
+     * A group small enough to be a leaf splits where the SAH finds it cheaper (four small boxes at the corners of a
+     * square: the children's boxes are a sliver of the node's) and stays one where no split pays (four boxes almost
+     * on top of each other), whether or not the build skips binning the leaves it can price without bins.
+     */
+    @Test
+    void aSmallGroupSplitsOnlyWhereTheSahSaysSo() {
+        double s = 0.01;
+        double[] corners = {0, 0, 0, s, s, s, 1, 0, 0, 1 + s, s, s, 0, 1, 0, s, 1 + s, s, 1, 1, 0, 1 + s, 1 + s, s};
+        BVH spread = BVH.build(corners, 16, 4);
+        assertTrue(spread.leafCount() > 1, "four far-apart boxes split: " + spread.leafCount() + " leaf");
+        double[] stacked = {0, 0, 0, 1, 1, 1, s, 0, 0, 1 + s, 1, 1, 0, s, 0, 1, 1 + s, 1, s, s, 0, 1 + s, 1 + s, 1};
+        BVH together = BVH.build(stacked, 16, 4);
+        assertEquals(1, together.leafCount(), "four overlapping boxes stay one leaf");
+    }
+
     static Stream<Arguments> cases() {
         return LongStream.range(0, 8)
                 .mapToObj(i -> Arguments.of(0xB7L + 13L * i, (int) (1 + i * i * 37), (int) (1 + i % 4)));
