@@ -48,6 +48,14 @@ public final class BVH {
      */
     static final int PARALLEL_GRAIN = 32_768;
 
+    /**
+     * Floats per primitive box given to the float build ({@link PrimitiveCollector#boxes}): the minimum corner x, y, z
+     * and an unused fourth, then the maximum corner likewise, so that one vector load reads a corner.
+     */
+    static final int BOX_STRIDE = 8;
+    /** Offset of a box's maximum corner in its {@link #BOX_STRIDE} floats. */
+    static final int BOX_MAX = 4;
+
     /** Floats per node in {@link #nodes}. */
     static final int NODE_STRIDE = 8 * WIDTH;
     /** Offsets of the children's box coordinates in a node: child c's minX is at {@code MIN_X + c}, and so on. */
@@ -156,14 +164,16 @@ public final class BVH {
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
-        if (primitiveBounds.length % 6 != 0) {
-            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
+        if (primitiveBounds.length % BOX_STRIDE != 0) {
+            throw new IllegalArgumentException("primitive bounds must hold " + BOX_STRIDE + " values per primitive");
         }
         if (primitiveBounds.length == 0) {
             throw new IllegalArgumentException("a BVH needs at least one primitive");
         }
-        for (int b = 0; b < primitiveBounds.length; b += 6) {
-            for (int a = 0; a < 3; a++) requireBox(b / 6, a, primitiveBounds[b + a], primitiveBounds[b + 3 + a]);
+        for (int b = 0; b < primitiveBounds.length; b += BOX_STRIDE) {
+            for (int a = 0; a < 3; a++) {
+                requireBox(b / BOX_STRIDE, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
+            }
         }
         return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);
     }
@@ -173,12 +183,17 @@ public final class BVH {
      * rounding could make a box empty by less than a float's step look valid.
      */
     static float[] roundedOutward(double[] bounds) {
-        float[] rounded = new float[bounds.length];
-        for (int b = 0; b + 6 <= bounds.length; b += 6) {
+        if (bounds.length % 6 != 0) {
+            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
+        }
+        int n = bounds.length / 6;
+        float[] rounded = new float[BOX_STRIDE * n];
+        for (int p = 0; p < n; p++) {
             for (int a = 0; a < 3; a++) {
-                requireBox(b / 6, a, bounds[b + a], bounds[b + 3 + a]);
-                rounded[b + a] = floatBelow(bounds[b + a]);
-                rounded[b + 3 + a] = floatAbove(bounds[b + 3 + a]);
+                double lo = bounds[6 * p + a], hi = bounds[6 * p + 3 + a];
+                requireBox(p, a, lo, hi);
+                rounded[BOX_STRIDE * p + a] = floatBelow(lo);
+                rounded[BOX_STRIDE * p + BOX_MAX + a] = floatAbove(hi);
             }
         }
         return rounded;

@@ -42,7 +42,7 @@ final class BvhBuilder {
      * group can leave the second's subtree out.
      */
     BvhBuilder(float[] primBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
-        this(primBounds, grouped(primBounds.length / 6, secondGroup), bins, maxLeafSize);
+        this(primBounds, grouped(primBounds.length / BVH.BOX_STRIDE, secondGroup), bins, maxLeafSize);
         int n = index.length;
         int split = firstOfSecondGroup(n, secondGroup);
         grouped = split > 0;

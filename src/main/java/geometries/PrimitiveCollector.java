@@ -193,11 +193,12 @@ final class PrimitiveCollector {
     }
 
     /**
-     * Six floats per primitive: its box padded outward ({@link #BOX_PAD}), then rounded to the nearest float (the BVH's
-     * nodes hold floats in the end; half the bytes of doubles for the build to read).
+     * A box per primitive ({@link BVH#BOX_STRIDE} floats: minimum corner, maximum corner, each with an unused fourth
+     * float), padded outward ({@link #BOX_PAD}), then rounded to the nearest float (the BVH's nodes hold floats in the
+     * end; half the bytes of doubles for the build to read).
      */
     float[] boxes() {
-        float[] boxes = new float[6 * count];
+        float[] boxes = new float[BVH.BOX_STRIDE * count];
         // Each box from its own primitive alone: a large mesh's on all cores.
         BuildPool.forEach(count, count >= PARALLEL, k -> box(k, boxes));
         return boxes;
@@ -206,9 +207,9 @@ final class PrimitiveCollector {
     /** Primitives from which a mesh is collected and {@link #boxes} made on all cores. */
     private static final int PARALLEL = 1 << 16;
 
-    /** Writes primitive {@code k}'s padded float box to {@code boxes[6k..6k+6)}. */
+    /** Writes primitive {@code k}'s padded float box to {@code boxes[8k..8k+8)}. */
     private void box(int k, float[] boxes) {
-        int b = 6 * k;
+        int b = BVH.BOX_STRIDE * k;
         BoundingBox box = objectBoxes[k];
         if (box != null) {
             padded(boxes, b, 0, box.minX, box.maxX);
@@ -229,7 +230,7 @@ final class PrimitiveCollector {
         double pad = BOX_PAD * Math.max(Math.abs(lo), Math.abs(hi)) + 0x1p-148;
         // Beyond float's range the nearest float is infinite: a box's near side stays at float's largest value.
         boxes[b + a] = Math.min((float) (lo - pad), Float.MAX_VALUE);
-        boxes[b + 3 + a] = Math.max((float) (hi + pad), -Float.MAX_VALUE);
+        boxes[b + BVH.BOX_MAX + a] = Math.max((float) (hi + pad), -Float.MAX_VALUE);
     }
 
     /** An undirected edge between two exact points, for finding shared outline edges. */

@@ -50,7 +50,7 @@ class PrimitiveBoxesTest {
                     hi = Math.max(hi, c);
                 }
                 double room = 1e-14 * Math.max(Math.abs(lo), Math.abs(hi));
-                float min = boxes[6 * p + a], max = boxes[6 * p + 3 + a];
+                float min = boxes[BVH.BOX_STRIDE * p + a], max = boxes[BVH.BOX_STRIDE * p + BVH.BOX_MAX + a];
                 // Beyond float's range the far side is infinite and the near side float's largest value.
                 assertTrue(min < lo - room, p + " axis " + a + ": " + min + " against " + lo);
                 assertTrue(max > hi + room, p + " axis " + a + ": " + max + " against " + hi);

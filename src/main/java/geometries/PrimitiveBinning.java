@@ -1,0 +1,59 @@
+package geometries;
+
+/**
+ * The loops of the SAH build that read every primitive of a node: binning its centroids ({@link #bin}) and
+ * summarizing a range ({@link #summarize}), and the merge of two summaries. Two implementations give bit-identical
+ * results (minima and maxima are exact, and each centroid is the same double sum): a scalar one, and one on the
+ * JDK's incubating Vector API that handles a box's three minima, three maxima and its centroid's coordinates in three
+ * vectors of four doubles. Chosen at startup as {@link WideBoxTest} is: the vectorized one where the JVM has the
+ * module and the CPU 256-bit vectors.
+ *
+ * <p>A primitive's box is {@link BVH#BOX_STRIDE} floats ({@link BVH#BOX_MAX} the offset of its maximum corner); a
+ * summary is {@link SahSplitter#SUMMARY} doubles, its box and its centroids' box, each corner in four (the fourth
+ * unused), so that a vector of four doubles reads or writes a corner.
+ */
+abstract class PrimitiveBinning {
+    /** The binning this JVM runs: vectorized where it can be, scalar otherwise. */
+    static final PrimitiveBinning SELECTED = select();
+
+    /**
+     * Adds each primitive of {@code index[start..end)} to the bin of its centroid on {@code axis}: its count, and its
+     * box and centroid to the bin's summary. A bin's summary is written by its first primitive; only bins listed in
+     * {@link SahBins#used} (in the order first used) hold anything, and {@code bins} must be {@link SahBins#clear
+     * cleared} before.
+     */
+    abstract void bin(float[] boxes, int[] index, int start, int end, int axis, double lo, double scale, SahBins bins);
+
+    /** Writes the summary of the primitives of {@code index[start..end)} to {@code out[at..at+SUMMARY)}. */
+    abstract void summarize(float[] boxes, int[] index, int start, int end, double[] out, int at);
+
+    /** Merges the summary at {@code from[f..]} into the one at {@code to[t..]}. */
+    abstract void merge(double[] from, int f, double[] to, int t);
+
+    /** A short name for reports and tests: "vector" or "scalar". */
+    abstract String name();
+
+    /**
+     * The bin of a centroid: conversion truncates toward zero, what lies below {@code lo} goes to bin 0, what lies at
+     * or beyond the last bin's end to the last, and NaN (infinite boxes) to bin 0. {@link SahSplitter}'s partition
+     * relies on exactly this.
+     */
+    static int binOf(double centroid, double lo, double scale, int bins) {
+        int bin = (int) ((centroid - lo) * scale);
+        return bin < 0 ? 0 : bin >= bins ? bins - 1 : bin;
+    }
+
+    private static PrimitiveBinning select() {
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) {
+            try {
+                // By name, so that without the module the vectorized class is never loaded.
+                return (PrimitiveBinning) Class.forName("geometries.VectorPrimitiveBinning")
+                        .getDeclaredConstructor()
+                        .newInstance();
+            } catch (ReflectiveOperationException | LinkageError e) {
+                return new ScalarPrimitiveBinning();
+            }
+        }
+        return new ScalarPrimitiveBinning();
+    }
+}

@@ -1,0 +1,43 @@
+package geometries;
+
+/**
+ * The bins of one SAH split: per bin the primitives whose centroids fall in it and their summary, and which bins the
+ * split used. Most nodes are small: a bin is written by its first primitive and read only if used, so that no split
+ * resets or sweeps bins it never filled.
+ */
+final class SahBins {
+    /** Primitives per bin. */
+    final int[] count;
+    /** Per bin, {@link SahSplitter#SUMMARY} doubles: the box and the centroids' box of its primitives. */
+    final double[] summaries;
+    /** The bins used, in the order first used (then sorted), and how many. */
+    final int[] used;
+
+    int usedCount;
+
+    SahBins(int bins) {
+        count = new int[bins];
+        summaries = new double[SahSplitter.SUMMARY * bins];
+        used = new int[bins];
+    }
+
+    /** How many bins there are. */
+    int size() {
+        return count.length;
+    }
+
+    /** Empties the bins the last split used. */
+    void clear() {
+        for (int u = 0; u < usedCount; u++) count[used[u]] = 0;
+        usedCount = 0;
+    }
+
+    /** Sorts the used bins in order along the axis (insertion sort: a handful of bins). */
+    void sortUsed() {
+        for (int u = 1; u < usedCount; u++) {
+            int bin = used[u], v = u;
+            for (; v > 0 && used[v - 1] > bin; v--) used[v] = used[v - 1];
+            used[v] = bin;
+        }
+    }
+}

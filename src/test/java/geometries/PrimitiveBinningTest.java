@@ -1,0 +1,235 @@
+package geometries;
+
+import static geometries.BVH.BOX_MAX;
+import static geometries.BVH.BOX_STRIDE;
+import static geometries.SahSplitter.CENTROID_MAX;
+import static geometries.SahSplitter.CENTROID_MIN;
+import static geometries.SahSplitter.MAX;
+import static geometries.SahSplitter.MIN;
+import static geometries.SahSplitter.SUMMARY;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.SplittableRandom;
+import java.util.stream.LongStream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The two implementations of {@link PrimitiveBinning}: the JVM picks the vectorized one exactly when the Vector API
+ * module is present (surefire runs this class both with and without it); the one it runs puts every primitive in the
+ * bin of its centroid with exactly its members' boxes and centroids; and both give the same bins, summaries and
+ * merges bit for bit, on random boxes mixed with the hard ones: flat, signed zeros, at float's largest value, and
+ * infinite (whose centroids are infinite or NaN).
+ */
+class PrimitiveBinningTest {
+    private static final boolean VECTOR_MODULE =
+            ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
+
+    @Test
+    void theVectorizedBinningRunsExactlyWhenTheModuleIsPresent() throws ReflectiveOperationException {
+        assertEquals(VECTOR_MODULE && wideVectors() ? "vector" : "scalar", PrimitiveBinning.SELECTED.name());
+    }
+
+    static LongStream seeds() {
+        return LongStream.range(0, 12).map(i -> 0x5A4B1 + 7919 * i);
+    }
+
+    /** Each bin holds the primitives whose centroids fall in it, its summary exactly theirs. */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void everyPrimitiveLandsInItsBinWithItsBox(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        int n = 1 + random.nextInt(3000);
+        float[] boxes = randomBoxes(n, random, false);
+        int[] index = shuffled(n, random);
+        int start = random.nextInt(n), end = start + 1 + random.nextInt(n - start);
+        int axis = random.nextInt(3), size = 2 + random.nextInt(31);
+        double[] whole = new double[SUMMARY];
+        PrimitiveBinning.SELECTED.summarize(boxes, index, start, end, whole, 0);
+        double lo = whole[CENTROID_MIN + axis];
+        double extent = whole[CENTROID_MAX + axis] - lo;
+        double scale = extent > 0 ? size / extent : 1;
+        SahBins bins = new SahBins(size);
+        PrimitiveBinning.SELECTED.bin(boxes, index, start, end, axis, lo, scale, bins);
+
+        int[] count = new int[size];
+        double[] expected = new double[SUMMARY * size];
+        for (int b = 0; b < size; b++) SahSplitter.resetSummary(expected, SUMMARY * b);
+        for (int k = start; k < end; k++) {
+            int o = BOX_STRIDE * index[k];
+            double c = 0.5 * ((double) boxes[o + axis] + boxes[o + BOX_MAX + axis]);
+            int bin = PrimitiveBinning.binOf(c, lo, scale, size);
+            count[bin]++;
+            for (int a = 0; a < 3; a++) {
+                double min = boxes[o + a], max = boxes[o + BOX_MAX + a], centroid = 0.5 * (min + max);
+                int e = SUMMARY * bin;
+                expected[e + MIN + a] = Math.min(expected[e + MIN + a], min);
+                expected[e + MAX + a] = Math.max(expected[e + MAX + a], max);
+                expected[e + CENTROID_MIN + a] = Math.min(expected[e + CENTROID_MIN + a], centroid);
+                expected[e + CENTROID_MAX + a] = Math.max(expected[e + CENTROID_MAX + a], centroid);
+            }
+        }
+        int used = 0;
+        for (int b = 0; b < size; b++) {
+            assertEquals(count[b], bins.count[b], "bin " + b);
+            if (count[b] > 0) {
+                used++;
+                assertSameSummary(expected, SUMMARY * b, bins.summaries, SUMMARY * b, "bin " + b);
+            }
+        }
+        assertEquals(used, bins.usedCount, "bins listed as used");
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void scalarAndVectorBinningAgree(long seed) throws ReflectiveOperationException {
+        assumeTrue(VECTOR_MODULE && wideVectors(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
+        PrimitiveBinning vector = (PrimitiveBinning) Class.forName("geometries.VectorPrimitiveBinning")
+                .getDeclaredConstructor()
+                .newInstance();
+        PrimitiveBinning scalar = new ScalarPrimitiveBinning();
+        SplittableRandom random = new SplittableRandom(seed);
+        int n = 1 + random.nextInt(3000);
+        // Half the seeds draw every bound from a few values, so that ties between signed zeros, and infinite and NaN
+        // centroids, meet in the same runs and bins.
+        float[] boxes = seed % 2 == 0 ? randomBoxes(n, random, true) : boxesOfFewValues(n, random);
+        int[] index = shuffled(n, random);
+        for (int round = 0; round < 20; round++) {
+            // Short ranges too: over many primitives a tie between zeros rarely decides a minimum or maximum.
+            int start = random.nextInt(n);
+            int length = random.nextBoolean() ? random.nextInt(9) : random.nextInt(n - start + 1);
+            int end = Math.min(n, start + length);
+            double[] s = new double[SUMMARY], v = new double[SUMMARY];
+            scalar.summarize(boxes, index, start, end, s, 0);
+            vector.summarize(boxes, index, start, end, v, 0);
+            assertSameSummary(s, 0, v, 0, "summary of [" + start + ", " + end + ")");
+
+            int axis = random.nextInt(3), size = 2 + random.nextInt(31);
+            double lo = random.nextInt(4) == 0 ? s[CENTROID_MIN + axis] : 100 * random.nextGaussian();
+            double scale = random.nextInt(4) == 0 ? 0.0 : Math.exp(6 * random.nextGaussian());
+            SahBins a = new SahBins(size), b = new SahBins(size);
+            scalar.bin(boxes, index, start, end, axis, lo, scale, a);
+            vector.bin(boxes, index, start, end, axis, lo, scale, b);
+            assertEquals(a.usedCount, b.usedCount, "bins used");
+            for (int u = 0; u < a.usedCount; u++) {
+                int bin = a.used[u];
+                assertEquals(bin, b.used[u], "bins in the order first used");
+                assertEquals(a.count[bin], b.count[bin], "count of bin " + bin);
+                assertSameSummary(a.summaries, SUMMARY * bin, b.summaries, SUMMARY * bin, "bin " + bin);
+            }
+
+            double[] into = new double[SUMMARY];
+            SahSplitter.resetSummary(into, 0);
+            double[] other = into.clone();
+            for (int u = 0; u < a.usedCount; u++) {
+                scalar.merge(a.summaries, SUMMARY * a.used[u], into, 0);
+                vector.merge(b.summaries, SUMMARY * b.used[u], other, 0);
+            }
+            assertSameSummary(into, 0, other, 0, "merged bins");
+        }
+    }
+
+    /** The twelve values of two summaries, bit for bit (any NaN equal to any NaN). */
+    private static void assertSameSummary(double[] expected, int e, double[] actual, int a, String what) {
+        for (int corner : new int[] {MIN, MAX, CENTROID_MIN, CENTROID_MAX}) {
+            for (int i = 0; i < 3; i++) {
+                assertEquals(
+                        Double.doubleToLongBits(expected[e + corner + i]),
+                        Double.doubleToLongBits(actual[a + corner + i]),
+                        what + ", value " + (corner + i) + ": " + expected[e + corner + i] + " against "
+                                + actual[a + corner + i]);
+            }
+        }
+    }
+
+    /**
+     * Boxes of {@code n} primitives in the build's layout: mostly small random boxes, in runs along x as a mesh's
+     * come, some flat, some with signed zeros, some at float's largest value; with {@code extreme}, some infinite.
+     */
+    private static float[] randomBoxes(int n, SplittableRandom random, boolean extreme) {
+        float[] boxes = new float[BOX_STRIDE * n];
+        double x = 0;
+        for (int p = 0; p < n; p++) {
+            x += random.nextDouble();
+            int o = BOX_STRIDE * p, kind = random.nextInt(extreme ? 12 : 10);
+            for (int a = 0; a < 3; a++) {
+                float lo, hi;
+                switch (kind) {
+                    case 0 -> lo = hi = (float) random.nextGaussian(); // flat
+                    case 1 -> {
+                        lo = random.nextBoolean() ? 0.0f : -0.0f;
+                        hi = random.nextBoolean() ? 0.0f : -0.0f;
+                    }
+                    case 2 -> {
+                        lo = Float.MAX_VALUE * (random.nextBoolean() ? 1 : -1);
+                        hi = Float.MAX_VALUE;
+                    }
+                    case 10 -> {
+                        lo = random.nextBoolean() ? Float.NEGATIVE_INFINITY : (float) random.nextGaussian();
+                        hi = Float.POSITIVE_INFINITY;
+                    }
+                    case 11 -> {
+                        lo = Float.NEGATIVE_INFINITY;
+                        hi = (float) random.nextGaussian();
+                    }
+                    default -> {
+                        lo = (float) ((a == 0 ? x : 0) + 10 * random.nextGaussian());
+                        hi = lo + (float) Math.abs(random.nextGaussian());
+                    }
+                }
+                boxes[o + a] = lo;
+                boxes[o + BOX_MAX + a] = hi;
+            }
+        }
+        return boxes;
+    }
+
+    /** Boxes whose bounds are drawn from signed zeros (half of them), one, float's largest value and the infinities. */
+    private static float[] boxesOfFewValues(int n, SplittableRandom random) {
+        float[] values = {
+            Float.NEGATIVE_INFINITY,
+            -Float.MAX_VALUE,
+            -1,
+            -0.0f,
+            -0.0f,
+            -0.0f,
+            0.0f,
+            0.0f,
+            0.0f,
+            1,
+            Float.MAX_VALUE,
+            Float.POSITIVE_INFINITY
+        };
+        float[] boxes = new float[BOX_STRIDE * n];
+        for (int p = 0; p < n; p++) {
+            for (int a = 0; a < 3; a++) {
+                int i = random.nextInt(values.length), j = random.nextInt(values.length);
+                boxes[BOX_STRIDE * p + a] = values[Math.min(i, j)];
+                boxes[BOX_STRIDE * p + BOX_MAX + a] = values[Math.max(i, j)];
+            }
+        }
+        return boxes;
+    }
+
+    private static int[] shuffled(int n, SplittableRandom random) {
+        int[] index = new int[n];
+        for (int i = 0; i < n; i++) index[i] = i;
+        // Mostly in order, as a mesh's primitives come: swap a few.
+        for (int i = 0; i < n / 8; i++) {
+            int a = random.nextInt(n), b = random.nextInt(n), t = index[a];
+            index[a] = index[b];
+            index[b] = t;
+        }
+        return index;
+    }
+
+    /** Whether the CPU has 256-bit vectors (asked by reflection: this class must load without the module). */
+    private static boolean wideVectors() throws ReflectiveOperationException {
+        Class<?> doubles = Class.forName("jdk.incubator.vector.DoubleVector");
+        Object preferred = doubles.getField("SPECIES_PREFERRED").get(null);
+        Class<?> species = Class.forName("jdk.incubator.vector.VectorSpecies");
+        return (int) species.getMethod("vectorBitSize").invoke(preferred) >= 256;
+    }
+}
