@@ -18,9 +18,9 @@ abstract class PrimitiveBinning {
 
     /**
      * Adds each primitive of {@code index[start..end)} to the bin of its centroid on {@code axis}: its count, and its
-     * box and centroid to the bin's summary. A bin's summary is written by its first primitive; only bins listed in
-     * {@link SahBins#used} (in the order first used) hold anything, and {@code bins} must be {@link SahBins#clear
-     * cleared} before.
+     * box and centroid to the bin's summary, and records its bin at {@code binOfPosition[k - start]}. A bin's summary
+     * is written by its first primitive; only bins listed in {@link SahBins#used} (in the order first used) hold
+     * anything, and {@code bins} must be {@link SahBins#clear cleared} for at least {@code end - start} primitives.
      */
     abstract void bin(float[] boxes, int[] index, int start, int end, int axis, double lo, double scale, SahBins bins);
 
@@ -35,8 +35,7 @@ abstract class PrimitiveBinning {
 
     /**
      * The bin of a centroid: conversion truncates toward zero, what lies below {@code lo} goes to bin 0, what lies at
-     * or beyond the last bin's end to the last, and NaN (infinite boxes) to bin 0. {@link SahSplitter}'s partition
-     * relies on exactly this.
+     * or beyond the last bin's end to the last, and NaN (infinite boxes) to bin 0.
      */
     static int binOf(double centroid, double lo, double scale, int bins) {
         int bin = (int) ((centroid - lo) * scale);

@@ -14,8 +14,14 @@ final class SahBins {
     final int[] used;
 
     int usedCount;
+    /**
+     * The bin of each primitive binned last, by position in the range ({@code k - start}), so that the partition sends
+     * each primitive to the side of the bin that counted it without computing its centroid again.
+     */
+    byte[] binOfPosition = new byte[0];
 
     SahBins(int bins) {
+        if (bins > 256) throw new IllegalArgumentException("at most 256 bins: a bin is kept in a byte");
         count = new int[bins];
         summaries = new double[SahSplitter.SUMMARY * bins];
         used = new int[bins];
@@ -26,8 +32,9 @@ final class SahBins {
         return count.length;
     }
 
-    /** Empties the bins the last split used. */
-    void clear() {
+    /** Empties the bins the last split used, and makes room for binning {@code primitives}. */
+    void clear(int primitives) {
+        if (binOfPosition.length < primitives) binOfPosition = new byte[primitives];
         for (int u = 0; u < usedCount; u++) count[used[u]] = 0;
         usedCount = 0;
     }

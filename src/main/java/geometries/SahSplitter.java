@@ -60,17 +60,6 @@ final class SahSplitter {
         }
     }
 
-    /**
-     * Centroid of primitive {@code p} on {@code axis}, computed where needed rather than stored: the box it
-     * comes from is read anyway, and a stored copy cost another cache miss per primitive and pass. The sum is taken
-     * in double, as the binning takes it: in float it would round differently, and a primitive binned on one side
-     * could be partitioned to the other.
-     */
-    private double centroid(int p, int axis) {
-        int o = BVH.BOX_STRIDE * p;
-        return 0.5 * ((double) boxes[o + axis] + boxes[o + BVH.BOX_MAX + axis]);
-    }
-
     /** Writes the summary of {@code [start, end)} to {@code out[at..at+SUMMARY)}: one pass over its primitives. */
     void summarize(int start, int end, double[] out, int at) {
         BINNING.summarize(boxes, index, start, end, out, at);
@@ -141,7 +130,7 @@ final class SahSplitter {
         // A bin's summary is written by its first primitive, and the sweeps visit only the bins used, in order: most
         // nodes are small, and resetting and sweeping sixteen bins cost more than binning their primitives.
         SahBins bins = this.bins;
-        bins.clear();
+        bins.clear(count);
         double scale = bins.size() / extent;
         BINNING.bin(boxes, index, start, end, axis, lo, scale, bins);
         bins.sortUsed();
@@ -199,15 +188,13 @@ final class SahSplitter {
         for (int u = 1; u <= bestUsed; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, left);
         System.arraycopy(binSummaries, SUMMARY * used[bestUsed + 1], childSummaries, right, SUMMARY);
         for (int u = bestUsed + 2; u < n; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, right);
-        // PrimitiveBinning.binOf gives at most bestSplit exactly where (c - lo) * scale is not at least
-        // bestSplit + 1: conversion truncates toward zero, the clamps send what lies below 0 to bin 0 and what lies
-        // from bins on to the last bin (never left of a split), and NaN (infinite boxes) converts to bin 0. The same
-        // sides, without the conversion.
-        double leftLimit = bestSplit + 1;
+        // Each primitive to the side of its bin. In this in-place partition the primitive at k has not moved yet (swaps
+        // only bring already-seen ones there), so its bin is still the one recorded at its position.
+        byte[] binOf = bins.binOfPosition;
         int i = start;
         for (int k = start; k < end; k++) {
             int p = index[k];
-            int goesLeft = (centroid(p, axis) - lo) * scale >= leftLimit ? 0 : 1;
+            int goesLeft = (binOf[k - start] & 0xFF) <= bestSplit ? 1 : 0;
             index[k] = index[i];
             index[i] = p;
             i += goesLeft;

@@ -18,6 +18,7 @@ final class ScalarPrimitiveBinning extends PrimitiveBinning {
     @Override
     void bin(float[] boxes, int[] index, int start, int end, int axis, double lo, double scale, SahBins bins) {
         int size = bins.size();
+        byte[] binOfPosition = bins.binOfPosition;
         // Neighbours in the index mostly fall in the same bin: a run of them is summarized in locals and merged
         // into its bin once, not primitive by primitive through memory (each merge waiting for the last one's store).
         int runBin = -1, run = 0;
@@ -29,6 +30,7 @@ final class ScalarPrimitiveBinning extends PrimitiveBinning {
             double x1 = boxes[o + BOX_MAX], y1 = boxes[o + BOX_MAX + 1], z1 = boxes[o + BOX_MAX + 2];
             double x = 0.5 * (x0 + x1), y = 0.5 * (y0 + y1), z = 0.5 * (z0 + z1);
             int bin = binOf(axis == 0 ? x : axis == 1 ? y : z, lo, scale, size);
+            binOfPosition[k - start] = (byte) bin;
             if (bin == runBin) {
                 run++;
                 rx0 = Math.min(rx0, x0);

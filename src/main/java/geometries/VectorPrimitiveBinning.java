@@ -51,6 +51,7 @@ final class VectorPrimitiveBinning extends PrimitiveBinning {
         int size = bins.size();
         double[] s = bins.summaries;
         int[] count = bins.count;
+        byte[] binOfPosition = bins.binOfPosition;
         // Neighbours in the index mostly fall in the same bin: a run of them is summarized in registers and merged
         // into its bin once.
         int runBin = -1, run = 0;
@@ -62,6 +63,7 @@ final class VectorPrimitiveBinning extends PrimitiveBinning {
             DoubleVector centroid = min.add(max).mul(0.5);
             // The centroid on the axis from the floats again: a lane picked by a variable index costs more.
             int bin = binOf(0.5 * ((double) boxes[o + axis] + boxes[o + BOX_MAX + axis]), lo, scale, size);
+            binOfPosition[k - start] = (byte) bin;
             if (bin == runBin) {
                 run++;
                 runMin = runMin.min(min);

@@ -52,6 +52,7 @@ class PrimitiveBinningTest {
         double extent = whole[CENTROID_MAX + axis] - lo;
         double scale = extent > 0 ? size / extent : 1;
         SahBins bins = new SahBins(size);
+        bins.clear(end - start);
         PrimitiveBinning.SELECTED.bin(boxes, index, start, end, axis, lo, scale, bins);
 
         int[] count = new int[size];
@@ -61,6 +62,7 @@ class PrimitiveBinningTest {
             int o = BOX_STRIDE * index[k];
             double c = 0.5 * ((double) boxes[o + axis] + boxes[o + BOX_MAX + axis]);
             int bin = PrimitiveBinning.binOf(c, lo, scale, size);
+            assertEquals(bin, bins.binOfPosition[k - start] & 0xFF, "bin recorded at position " + (k - start));
             count[bin]++;
             for (int a = 0; a < 3; a++) {
                 double min = boxes[o + a], max = boxes[o + BOX_MAX + a], centroid = 0.5 * (min + max);
@@ -110,9 +112,14 @@ class PrimitiveBinningTest {
             double lo = random.nextInt(4) == 0 ? s[CENTROID_MIN + axis] : 100 * random.nextGaussian();
             double scale = random.nextInt(4) == 0 ? 0.0 : Math.exp(6 * random.nextGaussian());
             SahBins a = new SahBins(size), b = new SahBins(size);
+            a.clear(end - start);
+            b.clear(end - start);
             scalar.bin(boxes, index, start, end, axis, lo, scale, a);
             vector.bin(boxes, index, start, end, axis, lo, scale, b);
             assertEquals(a.usedCount, b.usedCount, "bins used");
+            for (int k = 0; k < end - start; k++) {
+                assertEquals(a.binOfPosition[k], b.binOfPosition[k], "bin recorded at position " + k);
+            }
             for (int u = 0; u < a.usedCount; u++) {
                 int bin = a.used[u];
                 assertEquals(bin, b.used[u], "bins in the order first used");
