@@ -62,7 +62,7 @@ final class SahSplitter {
 
     /** Writes the summary of {@code [start, end)} to {@code out[at..at+SUMMARY)}: one pass over its primitives. */
     void summarize(int start, int end, double[] out, int at) {
-        BINNING.summarize(boxes, index, start, end, out, at);
+        PrimitiveBinning.forRange(end - start).summarize(boxes, index, start, end, out, at);
     }
 
     /** An empty summary at {@code s[at..]}: each minimum corner +inf, each maximum corner -inf. */
@@ -132,7 +132,7 @@ final class SahSplitter {
         SahBins bins = this.bins;
         bins.clear(count);
         double scale = bins.size() / extent;
-        BINNING.bin(boxes, index, start, end, axis, lo, scale, bins);
+        PrimitiveBinning.forRange(count).bin(boxes, index, start, end, axis, lo, scale, bins);
         bins.sortUsed();
         int[] used = bins.used, binCount = bins.count;
         double[] binSummaries = bins.summaries;
