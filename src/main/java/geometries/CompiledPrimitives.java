@@ -70,9 +70,11 @@ final class CompiledPrimitives {
         objects = new Intersectable[n];
         mayTransmit = new boolean[n];
         clear = new boolean[n];
-        int[] order = bvh == null ? null : bvh.order;
-        // Each position is written from its own primitive alone, so large meshes lay out on all cores.
-        BuildPool.forEach(n, n >= PARALLEL_LAYOUT, k -> layOut(c, order, k));
+        int[] position = bvh == null ? null : positions(bvh.order);
+        // Each primitive is written to its own position alone, so large meshes lay out on all cores; in the order they
+        // were collected, so that reading a mesh's vertices and the collector's arrays runs through memory in order
+        // and only the writes land where the leaves put them.
+        BuildPool.forEach(n, n >= PARALLEL_LAYOUT, i -> layOut(c, i, position == null ? i : position[i]));
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];
@@ -82,9 +84,15 @@ final class CompiledPrimitives {
         }
     }
 
-    /** Writes the primitive at position {@code k} of the leaf order into the flat arrays. */
-    private void layOut(PrimitiveCollector c, int[] order, int k) {
-        int i = order == null ? k : order[k];
+    /** Where each primitive goes: the inverse of the leaf order {@code order}. */
+    private static int[] positions(int[] order) {
+        int[] position = new int[order.length];
+        for (int k = 0; k < order.length; k++) position[order[k]] = k;
+        return position;
+    }
+
+    /** Writes primitive {@code i} into the flat arrays at position {@code k} of the leaf order. */
+    private void layOut(PrimitiveCollector c, int i, int k) {
         int r = INFO * k;
         info[r + INDEX] = i;
         objects[k] = c.objects[i];
