@@ -71,16 +71,7 @@ abstract class PrimitiveBinning {
     }
 
     private static PrimitiveBinning select() {
-        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) {
-            try {
-                // By name, so that without the module the vectorized class is never loaded.
-                return (PrimitiveBinning) Class.forName("geometries.VectorPrimitiveBinning")
-                        .getDeclaredConstructor()
-                        .newInstance();
-            } catch (ReflectiveOperationException | LinkageError e) {
-                return new ScalarPrimitiveBinning();
-            }
-        }
-        return new ScalarPrimitiveBinning();
+        return VectorKernels.select(
+                PrimitiveBinning.class, "geometries.VectorPrimitiveBinning", ScalarPrimitiveBinning::new);
     }
 }

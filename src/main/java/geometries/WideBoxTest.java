@@ -36,17 +36,7 @@ abstract class WideBoxTest {
     abstract String name();
 
     private static WideBoxTest select() {
-        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) {
-            try {
-                // By name, so that without the module the vectorized class is never loaded.
-                return (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
-                        .getDeclaredConstructor()
-                        .newInstance();
-            } catch (ReflectiveOperationException | LinkageError e) {
-                return new ScalarWideBoxTest();
-            }
-        }
-        return new ScalarWideBoxTest();
+        return VectorKernels.select(WideBoxTest.class, "geometries.VectorWideBoxTest", ScalarWideBoxTest::new);
     }
 
     /**
