@@ -157,10 +157,10 @@ public final class BVH {
     }
 
     /**
-     * {@link #build(double[], int, int, boolean, boolean[])} over boxes already in floats, each holding its primitive
-     * ({@link #roundedOutward}, or padded as {@link PrimitiveCollector#boxes} gives them): the builder reads nothing
-     * else, and half the bytes of doubles per primitive and pass made the 1M heightfield's binary tree about 1.05-1.1x
-     * faster (docs/BENCHMARKS.md, 27 Nov).
+     * {@link #build(double[], int, int, boolean, boolean[])} over boxes already in floats ({@link #BOX_STRIDE} per
+     * primitive), each holding its primitive ({@link #roundedOutward}, or padded as {@link PrimitiveCollector#boxes}
+     * gives them): the builder reads nothing else, and half the bytes of doubles per primitive and pass made the 1M
+     * heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov).
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
@@ -179,8 +179,9 @@ public final class BVH {
     }
 
     /**
-     * Boxes given in doubles, each rounded outward to floats; a box empty or NaN in doubles is refused here, since
-     * rounding could make a box empty by less than a float's step look valid.
+     * Boxes given in doubles (six per primitive), each rounded outward to floats in the build's layout ({@link
+     * #BOX_STRIDE} per primitive); a box empty or NaN in doubles is refused here, since rounding could make a box empty
+     * by less than a float's step look valid.
      */
     static float[] roundedOutward(double[] bounds) {
         if (bounds.length % 6 != 0) {
