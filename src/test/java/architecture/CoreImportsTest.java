@@ -24,7 +24,7 @@ class CoreImportsTest {
     private static final List<String> CORE = List.of("primitives", "geometries", "lighting", "scene", "renderer");
     private static final Set<String> ALLOWED_ROOTS =
             Set.of("java", "javax", "primitives", "geometries", "lighting", "scene", "renderer");
-    /** A JDK module too (incubating): the BVH's vectorized box test uses it when the JVM has it. */
+    /** A JDK module too (incubating): the BVH's vectorized box test and binning use it when the JVM has it. */
     private static final String VECTOR_API = "jdk.incubator.vector.";
 
     private static final Pattern IMPORT = Pattern.compile("^import\\s+(?:static\\s+)?([\\w.]+)", Pattern.MULTILINE);
