@@ -19,7 +19,7 @@ abstract class PrimitiveBinning {
     private static final PrimitiveBinning SCALAR =
             SELECTED instanceof ScalarPrimitiveBinning ? SELECTED : new ScalarPrimitiveBinning();
     /** Primitives from which a range is binned by the scalar code until the vectorized code is {@link #warm}. */
-    static final int COLD_RANGE = 16;
+    private static final int COLD_RANGE = 16;
     /** Calls of the vectorized code on smaller ranges after which it counts as compiled. */
     private static final int WARM_CALLS = 100_000;
 
@@ -33,9 +33,9 @@ abstract class PrimitiveBinning {
      * {@link #WARM_CALLS} times on smaller ranges, large ranges get the scalar code. Before the JIT compiles it, vector
      * code runs as objects (each operation allocates) and is far slower than scalar code, and the top of a fresh JVM's
      * first build is binned before anything is compiled. The 1M heightfield's first build in a fresh JVM, alternated
-     * with the scalar build before the Vector API binning (six pairs): 1.25-1.48 s with the vectorized code throughout,
-     * 0.94-1.06 s so (0.84-0.98 s before; the second build 0.33-0.43 s against 0.46-0.58 s). Both give the same bins,
-     * so which runs changes no tree.
+     * with the build before the Vector API binning: with the vectorized code throughout 1.46 and 1.50 times as long
+     * (pairwise medians of two runs, four and three pairs), so 1.11-1.17 times (four runs of six pairs; the second build
+     * 0.75 times). Both give the same bins, so which runs changes no tree.
      */
     static PrimitiveBinning forRange(int primitives) {
         if (warm) return SELECTED;

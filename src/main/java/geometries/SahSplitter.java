@@ -200,7 +200,8 @@ final class SahSplitter {
             i += goesLeft;
         }
         // The children's boxes come from the bins, so a partition that disagreed with them would make boxes that miss
-        // their primitives (and, with a side left empty, a tree that never ends): refuse rather than build it.
+        // their primitives (and, with a side left empty, a tree that never ends): refuse rather than build it. The
+        // sides follow the recorded bins, so only a binning that recorded other bins than it counted could trip this.
         if (i - start != bestLeftCount) {
             throw new IllegalStateException("BVH build: the partition put " + (i - start) + " primitives left of bin "
                     + bestSplit + ", its bins counted " + bestLeftCount);

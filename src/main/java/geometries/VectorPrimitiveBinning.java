@@ -16,10 +16,10 @@ import jdk.incubator.vector.VectorSpecies;
 /**
  * {@link PrimitiveBinning} on the JDK's incubating Vector API: a box's minimum corner and maximum corner are each
  * one load of four floats widened to four doubles, its centroid their sum halved, and a run's or a bin's summary
- * four vector minima and maxima instead of twelve scalar ones (about 8 ns per primitive and level instead of 11 on
- * the 1M heightfield). Lanewise MIN and MAX follow {@link Math#min} and {@link Math#max}, and the centroid is the
- * same double sum as the scalar code's, so the bins are identical. Loaded only when the JVM runs with
- * {@code --add-modules jdk.incubator.vector}.
+ * four vector minima and maxima instead of twelve scalar ones (the sequential binary tree of the 1M heightfield
+ * 0.364-0.366 -> 0.303-0.327 s, best of 15, alternated with the scalar binning). Lanewise MIN and MAX follow {@link
+ * Math#min} and {@link Math#max}, and the centroid is the same double sum as the scalar code's, so the bins are
+ * identical. Loaded only when the JVM runs with {@code --add-modules jdk.incubator.vector}.
  */
 final class VectorPrimitiveBinning extends PrimitiveBinning {
     private static final VectorSpecies<Float> CORNER = FloatVector.SPECIES_128;

@@ -24,12 +24,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  * infinite (whose centroids are infinite or NaN).
  */
 class PrimitiveBinningTest {
-    private static final boolean VECTOR_MODULE =
-            ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
-
     @Test
     void theVectorizedBinningRunsExactlyWhenTheModuleIsPresent() throws ReflectiveOperationException {
-        assertEquals(VECTOR_MODULE && wideVectors() ? "vector" : "scalar", PrimitiveBinning.SELECTED.name());
+        assertEquals(VectorSupport.available() ? "vector" : "scalar", PrimitiveBinning.SELECTED.name());
     }
 
     static LongStream seeds() {
@@ -87,7 +84,7 @@ class PrimitiveBinningTest {
     @ParameterizedTest(name = "seed {0}")
     @MethodSource("seeds")
     void scalarAndVectorBinningAgree(long seed) throws ReflectiveOperationException {
-        assumeTrue(VECTOR_MODULE && wideVectors(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
+        assumeTrue(VectorSupport.available(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
         PrimitiveBinning vector = (PrimitiveBinning) Class.forName("geometries.VectorPrimitiveBinning")
                 .getDeclaredConstructor()
                 .newInstance();
@@ -230,13 +227,5 @@ class PrimitiveBinningTest {
             index[b] = t;
         }
         return index;
-    }
-
-    /** Whether the CPU has 256-bit vectors (asked by reflection: this class must load without the module). */
-    private static boolean wideVectors() throws ReflectiveOperationException {
-        Class<?> doubles = Class.forName("jdk.incubator.vector.DoubleVector");
-        Object preferred = doubles.getField("SPECIES_PREFERRED").get(null);
-        Class<?> species = Class.forName("jdk.incubator.vector.VectorSpecies");
-        return (int) species.getMethod("vectorBitSize").invoke(preferred) >= 256;
     }
 }

@@ -18,25 +18,14 @@ import primitives.Vector;
  * components, from inside a box, toward empty slots, through flat boxes.
  */
 class WideBoxTestTest {
-    private static final boolean VECTOR_MODULE =
-            ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent();
-
     @Test
     void theVectorizedKernelRunsExactlyWhenTheModuleIsPresent() throws ReflectiveOperationException {
-        assertEquals(VECTOR_MODULE && wideVectors() ? "vector" : "scalar", WideBoxTest.SELECTED.name());
-    }
-
-    /** Whether the CPU has 256-bit vectors (asked by reflection: this class must load without the module). */
-    private static boolean wideVectors() throws ReflectiveOperationException {
-        Class<?> doubles = Class.forName("jdk.incubator.vector.DoubleVector");
-        Object preferred = doubles.getField("SPECIES_PREFERRED").get(null);
-        Class<?> species = Class.forName("jdk.incubator.vector.VectorSpecies");
-        return (int) species.getMethod("vectorBitSize").invoke(preferred) >= 256;
+        assertEquals(VectorSupport.available() ? "vector" : "scalar", WideBoxTest.SELECTED.name());
     }
 
     @Test
     void scalarAndVectorKernelsAgree() throws ReflectiveOperationException {
-        assumeTrue(VECTOR_MODULE && wideVectors(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
+        assumeTrue(VectorSupport.available(), "needs --add-modules jdk.incubator.vector and 256-bit vectors");
         WideBoxTest vector = (WideBoxTest) Class.forName("geometries.VectorWideBoxTest")
                 .getDeclaredConstructor()
                 .newInstance();
