@@ -19,6 +19,8 @@ final class SahBins {
      * each primitive to the side of the bin that counted it without computing its centroid again.
      */
     byte[] binOfPosition = new byte[0];
+    /** Room for the primitives that the partition sends right, in their order, until it copies them back. */
+    int[] rightSide = new int[0];
 
     SahBins(int bins) {
         if (bins > 256) throw new IllegalArgumentException("at most 256 bins: a bin is kept in a byte");
@@ -34,7 +36,10 @@ final class SahBins {
 
     /** Empties the bins the last split used, and makes room for binning {@code primitives}. */
     void clear(int primitives) {
-        if (binOfPosition.length < primitives) binOfPosition = new byte[primitives];
+        if (binOfPosition.length < primitives) {
+            binOfPosition = new byte[primitives];
+            rightSide = new int[primitives];
+        }
         for (int u = 0; u < usedCount; u++) count[used[u]] = 0;
         usedCount = 0;
     }

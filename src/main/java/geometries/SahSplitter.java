@@ -5,7 +5,7 @@ import java.util.Arrays;
 /**
  * The binned surface-area heuristic that decides each node of a {@link BvhBuilder}'s tree: the centroids of a
  * node's primitives are binned along the axis of largest centroid extent, and the cheapest bin boundary is taken
- * unless a leaf is cheaper; the primitives are then partitioned in place in the shared index.
+ * unless a leaf is cheaper; the primitives are then partitioned, each side in its order, in the shared index.
  *
  * <p>A range of primitives is known by its summary: its primitives' box, then the box of their centroids
  * ({@link #SUMMARY} doubles). The bins of a split hold exactly its children's summaries, so a node needs no pass
@@ -180,7 +180,7 @@ final class SahSplitter {
             return count <= maxLeafSize ? -1 : halve(start, end, depth);
         }
         if (count <= maxLeafSize && splitCost >= count) return -1;
-        // The children's summaries are their bins' (the same primitives), then partition in place: bins
+        // The children's summaries are their bins' (the same primitives), then the partition: bins
         // [0, bestSplit] to the left.
         int left = childrenAt(depth), right = left + SUMMARY;
         // Each side starts as a copy of its first bin: cheaper than resetting it, on the many small nodes.
@@ -188,17 +188,22 @@ final class SahSplitter {
         for (int u = 1; u <= bestUsed; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, left);
         System.arraycopy(binSummaries, SUMMARY * used[bestUsed + 1], childSummaries, right, SUMMARY);
         for (int u = bestUsed + 2; u < n; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, right);
-        // Each primitive to the side of its bin. In this in-place partition the primitive at k has not moved yet (swaps
-        // only bring already-seen ones there), so its bin is still the one recorded at its position.
+        // Each primitive to the side of its bin (recorded at its position), both sides in the order they were: the left
+        // ones moved down in place, the right ones through a scratch array. Branch-free, and no load waits on the
+        // previous primitive's store, as in a partition by swaps; and the order kept keeps runs of neighbours in the
+        // same bins for the children's binning.
         byte[] binOf = bins.binOfPosition;
-        int i = start;
+        int[] rightSide = bins.rightSide;
+        int i = start, r = 0;
         for (int k = start; k < end; k++) {
             int p = index[k];
             int goesLeft = (binOf[k - start] & 0xFF) <= bestSplit ? 1 : 0;
-            index[k] = index[i];
             index[i] = p;
+            rightSide[r] = p;
             i += goesLeft;
+            r += 1 - goesLeft;
         }
+        System.arraycopy(rightSide, 0, index, i, r);
         // The children's boxes come from the bins, so a partition that disagreed with them would make boxes that miss
         // their primitives (and, with a side left empty, a tree that never ends): refuse rather than build it. The
         // sides follow the recorded bins, so only a binning that recorded other bins than it counted could trip this.
