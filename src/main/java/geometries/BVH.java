@@ -160,7 +160,8 @@ public final class BVH {
      * {@link #build(double[], int, int, boolean, boolean[])} over boxes already in floats ({@link #BOX_STRIDE} per
      * primitive), each holding its primitive ({@link #roundedOutward}, or padded as {@link PrimitiveCollector#boxes}
      * gives them): the builder reads nothing else, and half the bytes of doubles per primitive and pass made the 1M
-     * heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov).
+     * heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov). Bounds at -0.0 are set to 0.0
+     * in place (the same boxes), as {@link PrimitiveBinning#bin} requires.
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
@@ -173,6 +174,9 @@ public final class BVH {
         for (int b = 0; b < primitiveBounds.length; b += BOX_STRIDE) {
             for (int a = 0; a < 3; a++) {
                 requireBox(b / BOX_STRIDE, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
+                // -0.0 becomes 0.0, the same bound: the vectorized binning's minima and maxima need no signed zeros.
+                primitiveBounds[b + a] += 0.0f;
+                primitiveBounds[b + BOX_MAX + a] += 0.0f;
             }
         }
         return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);

@@ -45,10 +45,30 @@ abstract class PrimitiveBinning {
     }
 
     /**
+     * The binning for {@link #bin binning} a range of {@code primitives} whose box is {@code summary[at..]}: as {@link
+     * #forRange}, but the scalar code where the box spans some axis from -inf to +inf, whose primitives' centroids there
+     * may be NaN (see {@link #bin}).
+     */
+    static PrimitiveBinning forBinning(int primitives, double[] summary, int at) {
+        for (int a = 0; a < 3; a++) {
+            if (summary[at + SahSplitter.MIN + a] == Double.NEGATIVE_INFINITY
+                    && summary[at + SahSplitter.MAX + a] == Double.POSITIVE_INFINITY) {
+                return SCALAR;
+            }
+        }
+        return forRange(primitives);
+    }
+
+    /**
      * Adds each primitive of {@code index[start..end)} to the bin of its centroid on {@code axis}: its count, and its
      * box and centroid to the bin's summary, and records its bin at {@code binOfPosition[k - start]}. A bin's summary
      * is written by its first primitive; only bins listed in {@link SahBins#used} (in the order first used) hold
      * anything, and {@code bins} must be {@link SahBins#clear cleared} for at least {@code end - start} primitives.
+     *
+     * <p>The boxes must hold no -0.0 ({@link BVH#build(float[], int, int, boolean, boolean[])} sets such bounds to
+     * 0.0), and, for the vectorized code, none may span an axis from -inf to +inf ({@link #forBinning} gives such
+     * ranges the scalar code). Then no centroid is NaN or -0.0, and a minimum or maximum by one comparison and a blend,
+     * as the vectorized code takes them, is {@link Math#min}'s or {@link Math#max}'s, which the scalar code takes.
      */
     abstract void bin(float[] boxes, int[] index, int start, int end, int axis, double lo, double scale, SahBins bins);
 

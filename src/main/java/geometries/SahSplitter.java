@@ -97,7 +97,7 @@ final class SahSplitter {
         double nodeArea = surfaceArea(
                 summary[min], summary[min + 1], summary[min + 2], summary[max], summary[max + 1], summary[max + 2]);
         if (count <= maxLeafSize && leafIsCheaper(start, end, nodeArea, count)) return -1;
-        return sahPartition(start, end, depth, axis, lo, extent, nodeArea, count);
+        return sahPartition(start, end, depth, summary, at, axis, lo, extent, nodeArea, count);
     }
 
     /**
@@ -126,13 +126,22 @@ final class SahSplitter {
 
     /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
     private int sahPartition(
-            int start, int end, int depth, int axis, double lo, double extent, double nodeArea, int count) {
+            int start,
+            int end,
+            int depth,
+            double[] summary,
+            int at,
+            int axis,
+            double lo,
+            double extent,
+            double nodeArea,
+            int count) {
         // A bin's summary is written by its first primitive, and the sweeps visit only the bins used, in order: most
         // nodes are small, and resetting and sweeping sixteen bins cost more than binning their primitives.
         SahBins bins = this.bins;
         bins.clear(count);
         double scale = bins.size() / extent;
-        PrimitiveBinning.forRange(count).bin(boxes, index, start, end, axis, lo, scale, bins);
+        PrimitiveBinning.forBinning(count, summary, at).bin(boxes, index, start, end, axis, lo, scale, bins);
         bins.sortUsed();
         int[] used = bins.used, binCount = bins.count;
         double[] binSummaries = bins.summaries;

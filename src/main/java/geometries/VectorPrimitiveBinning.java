@@ -7,6 +7,8 @@ import static geometries.SahSplitter.CENTROID_MIN;
 import static geometries.SahSplitter.MAX;
 import static geometries.SahSplitter.MIN;
 import static geometries.SahSplitter.SUMMARY;
+import static jdk.incubator.vector.VectorOperators.GT;
+import static jdk.incubator.vector.VectorOperators.LT;
 
 import jdk.incubator.vector.DoubleVector;
 import jdk.incubator.vector.FloatVector;
@@ -67,10 +69,10 @@ final class VectorPrimitiveBinning extends PrimitiveBinning {
             binOfPosition[k - start] = (byte) bin;
             if (bin == runBin) {
                 run++;
-                runMin = runMin.min(min);
-                runMax = runMax.max(max);
-                runCentroidMin = runCentroidMin.min(centroid);
-                runCentroidMax = runCentroidMax.max(centroid);
+                runMin = runMin.blend(min, min.compare(LT, runMin));
+                runMax = runMax.blend(max, max.compare(GT, runMax));
+                runCentroidMin = runCentroidMin.blend(centroid, centroid.compare(LT, runCentroidMin));
+                runCentroidMax = runCentroidMax.blend(centroid, centroid.compare(GT, runCentroidMax));
                 continue;
             }
             if (run > 0) {

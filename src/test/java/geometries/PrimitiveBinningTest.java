@@ -7,7 +7,9 @@ import static geometries.SahSplitter.CENTROID_MIN;
 import static geometries.SahSplitter.MAX;
 import static geometries.SahSplitter.MIN;
 import static geometries.SahSplitter.SUMMARY;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.SplittableRandom;
@@ -21,7 +23,8 @@ import org.junit.jupiter.params.provider.MethodSource;
  * module is present (surefire runs this class both with and without it); the one it runs puts every primitive in the
  * bin of its centroid with exactly its members' boxes and centroids; and both give the same bins, summaries and
  * merges bit for bit, on random boxes mixed with the hard ones: flat, signed zeros, at float's largest value, and
- * infinite (whose centroids are infinite or NaN).
+ * infinite (whose centroids are infinite or NaN), binning them as a build gives them to it (no -0.0; a range spanning an
+ * axis from -inf to +inf binned by the scalar code).
  */
 class PrimitiveBinningTest {
     @Test
@@ -39,7 +42,7 @@ class PrimitiveBinningTest {
     void everyPrimitiveLandsInItsBinWithItsBox(long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         int n = 1 + random.nextInt(3000);
-        float[] boxes = randomBoxes(n, random, false);
+        float[] boxes = binnable(randomBoxes(n, random, false));
         int[] index = shuffled(n, random);
         int start = random.nextInt(n), end = start + 1 + random.nextInt(n - start);
         int axis = random.nextInt(3), size = 2 + random.nextInt(31);
@@ -95,6 +98,8 @@ class PrimitiveBinningTest {
         // centroids, meet in the same runs and bins.
         float[] boxes = seed % 2 == 0 ? randomBoxes(n, random, true) : boxesOfFewValues(n, random);
         int[] index = shuffled(n, random);
+        // Binning needs the boxes as a build gives it them; summaries and merges take any.
+        float[] binnable = binnable(boxes);
         for (int round = 0; round < 20; round++) {
             // Short ranges too: over many primitives a tie between zeros rarely decides a minimum or maximum.
             int start = random.nextInt(n);
@@ -111,8 +116,8 @@ class PrimitiveBinningTest {
             SahBins a = new SahBins(size), b = new SahBins(size);
             a.clear(end - start);
             b.clear(end - start);
-            scalar.bin(boxes, index, start, end, axis, lo, scale, a);
-            vector.bin(boxes, index, start, end, axis, lo, scale, b);
+            scalar.bin(binnable, index, start, end, axis, lo, scale, a);
+            vector.bin(binnable, index, start, end, axis, lo, scale, b);
             assertEquals(a.usedCount, b.usedCount, "bins used");
             for (int k = 0; k < end - start; k++) {
                 assertEquals(a.binOfPosition[k], b.binOfPosition[k], "bin recorded at position " + k);
@@ -133,6 +138,74 @@ class PrimitiveBinningTest {
             }
             assertSameSummary(into, 0, other, 0, "merged bins");
         }
+    }
+
+    /** A range whose box spans an axis from -inf to +inf (centroids there may be NaN) is binned by the scalar code. */
+    @Test
+    void aRangeSpanningAnAxisIsBinnedByTheScalarCode() {
+        double[] summary = new double[2 * SUMMARY];
+        for (int s = 0; s < 2; s++) {
+            for (int a = 0; a < 3; a++) {
+                summary[SUMMARY * s + MIN + a] = -1;
+                summary[SUMMARY * s + MAX + a] = 1;
+            }
+        }
+        summary[SUMMARY + MIN + 1] = Double.NEGATIVE_INFINITY;
+        summary[SUMMARY + MAX + 1] = Double.POSITIVE_INFINITY;
+        assertEquals(
+                PrimitiveBinning.SELECTED.name(),
+                PrimitiveBinning.forBinning(4, summary, 0).name());
+        assertEquals("scalar", PrimitiveBinning.forBinning(4, summary, SUMMARY).name());
+        // Infinite on one side only: centroids there are infinite, not NaN, and any binning takes them.
+        summary[SUMMARY + MAX + 1] = 1;
+        assertEquals(
+                PrimitiveBinning.SELECTED.name(),
+                PrimitiveBinning.forBinning(4, summary, SUMMARY).name());
+    }
+
+    /**
+     * A build sets bounds at -0.0 to 0.0 (the vectorized binning's minima need no signed zeros): the tree is the one
+     * built from the same boxes at 0.0, bit for bit.
+     */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void aBuildReadsNegativeZeroAsZero(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        int n = 1 + random.nextInt(400);
+        float[] signed = new float[BOX_STRIDE * n];
+        for (int p = 0; p < n; p++) {
+            for (int a = 0; a < 3; a++) {
+                boolean zero = random.nextInt(3) == 0;
+                float lo = zero ? (random.nextBoolean() ? -0.0f : 0.0f) : (float) random.nextGaussian();
+                float hi = zero && random.nextBoolean() ? -0.0f : Math.max(lo, 0) + (float) random.nextDouble();
+                signed[BOX_STRIDE * p + a] = lo;
+                signed[BOX_STRIDE * p + BOX_MAX + a] = hi;
+            }
+        }
+        float[] unsigned = signed.clone();
+        for (int i = 0; i < unsigned.length; i++) unsigned[i] += 0.0f;
+        BVH fromSigned = BVH.build(signed, 16, 4, false, null), fromUnsigned = BVH.build(unsigned, 16, 4, false, null);
+        assertArrayEquals(fromUnsigned.nodes, fromSigned.nodes);
+        assertArrayEquals(fromUnsigned.order, fromSigned.order);
+        for (float bound : signed) assertNotEquals(Float.floatToRawIntBits(-0.0f), Float.floatToRawIntBits(bound));
+    }
+
+    /**
+     * The boxes as a build bins them: bounds at -0.0 set to 0.0 (as {@link BVH#build} sets them), and an axis spanning
+     * -inf to +inf cut to float's largest negative value below (the build bins such ranges with the scalar code).
+     */
+    private static float[] binnable(float[] boxes) {
+        float[] binnable = boxes.clone();
+        for (int i = 0; i < binnable.length; i++) binnable[i] += 0.0f;
+        for (int o = 0; o < binnable.length; o += BOX_STRIDE) {
+            for (int a = 0; a < 3; a++) {
+                if (binnable[o + a] == Float.NEGATIVE_INFINITY
+                        && binnable[o + BOX_MAX + a] == Float.POSITIVE_INFINITY) {
+                    binnable[o + a] = -Float.MAX_VALUE;
+                }
+            }
+        }
+        return binnable;
     }
 
     /** The twelve values of two summaries, bit for bit (any NaN equal to any NaN). */
