@@ -40,6 +40,13 @@ public final class BvhBenchmark {
     private static final Vector UP_Z = new Vector(0, 0, 1);
     /** Most builds before the timed ones (the first one included). */
     private static final int WARM_UP_BUILDS = 10;
+    /**
+     * Fewest builds before the timed ones (the first one included). A build runs some loops once per build (the root's
+     * summary, the collapse's sweep, the layout's positions), which the JIT compiles only after a build or two: a
+     * fresh JVM built the 1M heightfield in 1.09, 0.40, 0.36, 0.21, 0.25, 0.27, 0.23, 0.20 ... s (27 Nov), so three
+     * builds after the first still ran code the JIT had not finished.
+     */
+    private static final int MIN_WARM_UP_BUILDS = 5;
 
     /** The workloads; adding one is adding a line. */
     static final List<Workload> WORKLOADS = List.of(
@@ -166,13 +173,17 @@ public final class BvhBenchmark {
         double[] buildSeconds = new double[Math.max(3, runs)];
         double[] buildCpuSeconds = new double[buildSeconds.length];
         ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
-        // The first build runs while the JIT compiles the builder: timed apart. Small scenes build again, untimed,
-        // for up to a second (at most WARM_UP_BUILDS builds), so that the timed builds run compiled code.
+        // The first build runs while the JIT compiles the builder: timed apart. Then untimed builds, at least
+        // MIN_WARM_UP_BUILDS in all and for at least a second (at most WARM_UP_BUILDS), so that the timed builds run
+        // compiled code.
         long firstStart = System.nanoTime();
         Accelerator bvh = Accelerator.build(scene, true);
         double firstBuild = (System.nanoTime() - firstStart) * 1e-9;
-        for (int i = 1; i < WARM_UP_BUILDS && System.nanoTime() - firstStart < 1_000_000_000L; i++) {
+        int untimed = 0;
+        while (1 + untimed < MIN_WARM_UP_BUILDS
+                || (1 + untimed < WARM_UP_BUILDS && System.nanoTime() - firstStart < 1_000_000_000L)) {
             bvh = Accelerator.build(scene, true);
+            untimed++;
         }
         for (int i = 0; i < buildSeconds.length; i++) {
             bvh = null; // let the previous build be collected before timing the next
@@ -189,13 +200,14 @@ public final class BvhBenchmark {
         double bytesPerPrimitive = (double) bvh.getBvh().bytes() / primitives;
         notes.add(String.format(
                 Locale.ROOT,
-                "- %s: build %.3f s wall, %.3f s CPU (medians of %d after a first build of %.3f s and untimed warm-up builds); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
+                "- %s: build %.3f s wall, %.3f s CPU (medians of %d after a first build of %.3f s and %d untimed ones); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
                         + " (all flat arrays %.1f B/prim)",
                 workload.name(),
                 build,
                 buildCpu,
                 buildSeconds.length,
                 firstBuild,
+                untimed,
                 bvh.buildBreakdown(),
                 bvh.getBvh().nodeCount(),
                 bvh.getBvh().leafCount(),
