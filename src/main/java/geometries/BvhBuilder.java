@@ -241,7 +241,7 @@ final class BvhBuilder {
 
     /**
      * What opening each binary node is worth to the wide collapse: its box's surface area times the primitives below
-     * it, the SAH's estimate of the work below it.
+     * it, the SAH's estimate of the work below it; -1 for a leaf, which cannot be opened.
      *
      * @return one weight per node of the finished tree
      */
@@ -255,7 +255,7 @@ final class BvhBuilder {
             int o = 6 * i;
             double area = SahSplitter.surfaceArea(
                     bounds[o], bounds[o + 1], bounds[o + 2], bounds[o + 3], bounds[o + 4], bounds[o + 5]);
-            work[i] = area * below[i];
+            work[i] = count > 0 ? -1 : area * below[i];
         }
         return work;
     }

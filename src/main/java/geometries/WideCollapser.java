@@ -95,8 +95,7 @@ final class WideCollapser {
             int widest = -1;
             double widestWeight = -1;
             for (int i = 0; i < n; i++) {
-                if (isLeaf(b, children[i])) continue;
-                double weight = work[children[i]];
+                double weight = work[children[i]]; // -1 for a leaf: never opened
                 if (weight > widestWeight) {
                     widestWeight = weight;
                     widest = i;
