@@ -91,14 +91,19 @@ final class CompiledPrimitives {
         return position;
     }
 
-    /** Writes primitive {@code i} into the flat arrays at position {@code k} of the leaf order. */
+    /**
+     * Writes primitive {@code i} into the flat arrays at position {@code k} of the leaf order. The arrays start zeroed,
+     * and only values other than null and false are written: position {@code k} is far from {@code k - 1}'s, so each
+     * array written is a cache line fetched, and a mesh's triangles have no object and are mostly opaque and not clear.
+     */
     private void layOut(PrimitiveCollector c, int i, int k) {
         int r = INFO * k;
         info[r + INDEX] = i;
-        objects[k] = c.objects[i];
-        mayTransmit[k] = c.mayTransmit[i];
-        clear[k] = c.clear[i];
-        if (objects[k] == null) {
+        Intersectable object = c.objects[i];
+        if (c.mayTransmit[i]) mayTransmit[k] = true;
+        if (c.clear[i]) clear[k] = true;
+        if (object != null) objects[k] = object;
+        if (object == null) {
             c.copyTriangle(i, triangles, 9 * k);
             info[r + EDGES] = c.shared[i];
             info[r + OWNER] = c.owners[i];
