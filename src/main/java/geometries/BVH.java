@@ -171,15 +171,43 @@ public final class BVH {
         if (primitiveBounds.length == 0) {
             throw new IllegalArgumentException("a BVH needs at least one primitive");
         }
-        for (int b = 0; b < primitiveBounds.length; b += BOX_STRIDE) {
-            for (int a = 0; a < 3; a++) {
-                requireBox(b / BOX_STRIDE, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
-                // -0.0 becomes 0.0, the same bound: the vectorized binning's minima and maxima need no signed zeros.
-                primitiveBounds[b + a] += 0.0f;
-                primitiveBounds[b + BOX_MAX + a] += 0.0f;
+        // A pass over every box, in chunks on all cores where there are many (one core took 7 ms for a million).
+        int n = primitiveBounds.length / BOX_STRIDE;
+        int chunks = (n + CHECK_CHUNK - 1) / CHECK_CHUNK;
+        int[] firstBad = new int[chunks];
+        BuildPool.forEach(chunks, parallel && chunks > 1, chunk -> {
+            firstBad[chunk] =
+                    checkAndNormalize(primitiveBounds, chunk * CHECK_CHUNK, Math.min(n, (chunk + 1) * CHECK_CHUNK));
+        });
+        // The first bad box of all: the first one found by the first chunk that found one.
+        for (int bad : firstBad) {
+            if (bad >= 0) {
+                int b = BOX_STRIDE * bad;
+                for (int a = 0; a < 3; a++)
+                    requireBox(bad, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
             }
         }
         return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);
+    }
+
+    /** Boxes per chunk of the check in {@link #build(float[], int, int, boolean, boolean[])}. */
+    private static final int CHECK_CHUNK = 1 << 16;
+
+    /**
+     * Sets the bounds at -0.0 of boxes {@code [from, to)} to 0.0 (the same bound: the vectorized binning's minima and
+     * maxima need no signed zeros) and returns the first box that is empty or NaN on some axis, or -1.
+     */
+    private static int checkAndNormalize(float[] boxes, int from, int to) {
+        int firstBad = -1;
+        for (int p = from; p < to; p++) {
+            int b = BOX_STRIDE * p;
+            for (int a = 0; a < 3; a++) {
+                if (!(boxes[b + a] <= boxes[b + BOX_MAX + a]) && firstBad < 0) firstBad = p;
+                boxes[b + a] += 0.0f;
+                boxes[b + BOX_MAX + a] += 0.0f;
+            }
+        }
+        return firstBad;
     }
 
     /**

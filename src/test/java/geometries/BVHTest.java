@@ -30,6 +30,28 @@ class BVHTest {
         assertThrows(IllegalArgumentException.class, () -> BVH.build(one, 16, 4).node(1));
     }
 
+    /**
+     * Among many float boxes (checked in chunks on all cores), the first bad one is named, whichever chunk holds it:
+     * a NaN in a later chunk and an empty box in an earlier one.
+     */
+    @Test
+    void theFirstBadBoxOfManyIsNamed() {
+        int n = 300_000;
+        float[] boxes = new float[BVH.BOX_STRIDE * n];
+        for (int p = 0; p < n; p++) {
+            for (int a = 0; a < 3; a++) {
+                boxes[BVH.BOX_STRIDE * p + a] = p;
+                boxes[BVH.BOX_STRIDE * p + BVH.BOX_MAX + a] = p + 1;
+            }
+        }
+        boxes[BVH.BOX_STRIDE * 250_001 + 1] = Float.NaN;
+        boxes[BVH.BOX_STRIDE * 70_003 + BVH.BOX_MAX + 2] = 70_002;
+        for (boolean parallel : new boolean[] {false, true}) {
+            Hits.assertRejected(
+                    () -> BVH.build(boxes.clone(), 16, 4, parallel, null), "empty or NaN", "primitive 70003", "axis 2");
+        }
+    }
+
     @Test
     void singlePrimitiveIsOneLeaf() {
         BVH bvh = BVH.build(new double[] {0, 0, 0, 1, 2, 3}, 16, 4);
