@@ -84,10 +84,18 @@ final class CompiledPrimitives {
         }
     }
 
-    /** Where each primitive goes: the inverse of the leaf order {@code order}. */
+    /**
+     * Where each primitive goes: the inverse of the leaf order {@code order}, a permutation, so each position is
+     * written once and large ones fill on all cores.
+     */
     private static int[] positions(int[] order) {
         int[] position = new int[order.length];
-        for (int k = 0; k < order.length; k++) position[order[k]] = k;
+        int chunks = (order.length + PARALLEL_LAYOUT - 1) / PARALLEL_LAYOUT;
+        BuildPool.forEach(chunks, chunks > 1, chunk -> {
+            for (int k = chunk * PARALLEL_LAYOUT, end = Math.min(order.length, k + PARALLEL_LAYOUT); k < end; k++) {
+                position[order[k]] = k;
+            }
+        });
         return position;
     }
 

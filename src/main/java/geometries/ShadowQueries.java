@@ -54,7 +54,8 @@ final class ShadowQueries {
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
         boolean objectsOnly = true;
-        for (int k = 0; k < boundedCount; k++) objectsOnly &= info[INFO * k + EDGES] == OBJECT;
+        // Up to the first triangle (a mesh's is the first primitive: no pass over a million records).
+        for (int k = 0; k < boundedCount && objectsOnly; k++) objectsOnly = info[INFO * k + EDGES] == OBJECT;
         testsPackets = !searchesTree && objectsOnly && !primitives.mayTransmit();
     }
 
