@@ -183,8 +183,9 @@ public final class BVH {
         for (int bad : firstBad) {
             if (bad >= 0) {
                 int b = BOX_STRIDE * bad;
-                for (int a = 0; a < 3; a++)
+                for (int a = 0; a < 3; a++) {
                     requireBox(bad, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
+                }
             }
         }
         return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);

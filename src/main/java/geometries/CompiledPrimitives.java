@@ -110,13 +110,13 @@ final class CompiledPrimitives {
         Intersectable object = c.objects[i];
         if (c.mayTransmit[i]) mayTransmit[k] = true;
         if (c.clear[i]) clear[k] = true;
-        if (object != null) objects[k] = object;
         if (object == null) {
             c.copyTriangle(i, triangles, 9 * k);
             info[r + EDGES] = c.shared[i];
             info[r + OWNER] = c.owners[i];
             info[r + PART] = c.parts[i];
         } else {
+            objects[k] = object;
             info[r + EDGES] = OBJECT;
             info[r + OWNER] = -1;
         }
