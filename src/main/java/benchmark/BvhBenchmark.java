@@ -166,6 +166,13 @@ public final class BvhBenchmark {
         return h + "\n" + line;
     }
 
+    /** The timed builds in the order they ran, so a median can be read beside its spread. */
+    private static String seconds(double[] seconds) {
+        StringBuilder s = new StringBuilder();
+        for (double t : seconds) s.append(s.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.3f", t));
+        return s.toString();
+    }
+
     private void measure(Workload workload, List<String> rows, List<String> notes) {
         System.out.println("== " + workload.name());
         Intersectable scene = workload.scene().get();
@@ -200,12 +207,13 @@ public final class BvhBenchmark {
         double bytesPerPrimitive = (double) bvh.getBvh().bytes() / primitives;
         notes.add(String.format(
                 Locale.ROOT,
-                "- %s: build %.3f s wall, %.3f s CPU (medians of %d after a first build of %.3f s and %d untimed ones); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
+                "- %s: build %.3f s wall, %.3f s CPU (medians of %d: %s s, after a first build of %.3f s and %d untimed ones); last build: %s; BVH %d nodes, %d leaves, depth %d, %.1f B/prim"
                         + " (all flat arrays %.1f B/prim)",
                 workload.name(),
                 build,
                 buildCpu,
                 buildSeconds.length,
+                seconds(buildSeconds),
                 firstBuild,
                 untimed,
                 bvh.buildBreakdown(),
