@@ -87,7 +87,6 @@ final class SahSplitter {
         double ez = summary[cMax + 2] - summary[cMin + 2];
         int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
         splitAxis = axis;
-        double lo = summary[cMin + axis];
         double extent = axis == 0 ? ex : axis == 1 ? ey : ez;
         if (!(extent > 0)) {
             // All centroids coincide: nothing separates them, so split by count to keep leaves small.
@@ -97,7 +96,7 @@ final class SahSplitter {
         double nodeArea = surfaceArea(
                 summary[min], summary[min + 1], summary[min + 2], summary[max], summary[max + 1], summary[max + 2]);
         if (count <= maxLeafSize && leafIsCheaper(start, end, nodeArea, count)) return -1;
-        return sahPartition(start, end, depth, summary, at, axis, lo, extent, nodeArea, count);
+        return sahPartition(start, end, depth, summary, at, axis, nodeArea);
     }
 
     /**
@@ -124,18 +123,14 @@ final class SahSplitter {
         return mid;
     }
 
-    /** Partitions by the cheapest bin boundary; returns the split position, or -1 if a leaf is better. */
-    private int sahPartition(
-            int start,
-            int end,
-            int depth,
-            double[] summary,
-            int at,
-            int axis,
-            double lo,
-            double extent,
-            double nodeArea,
-            int count) {
+    /**
+     * Partitions the node summarized at {@code summary[at..]} by the cheapest bin boundary on {@code axis} (its
+     * centroids' extent there is positive); returns the split position, or -1 if a leaf is better.
+     */
+    private int sahPartition(int start, int end, int depth, double[] summary, int at, int axis, double nodeArea) {
+        int count = end - start;
+        double lo = summary[at + CENTROID_MIN + axis];
+        double extent = summary[at + CENTROID_MAX + axis] - lo;
         // A bin's summary is written by its first primitive, and the sweeps visit only the bins used, in order: most
         // nodes are small, and resetting and sweeping sixteen bins cost more than binning their primitives.
         SahBins bins = this.bins;
