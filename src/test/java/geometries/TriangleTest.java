@@ -193,6 +193,34 @@ class TriangleTest {
         Hits.assertPoints(points, 1e-8, "far", new Point(1e7, 0.25, 0.25));
     }
 
+    /**
+     * Vertices near 1e200 around a ray along +z: the edge functions' products overflow, and Kahan's correction
+     * subtracts infinities, so some edge functions are NaN (the rejection by their minimum and maximum lets those
+     * through). The test must still answer a miss, not a hit at a NaN distance, and leave the record as it was,
+     * wherever the triangle lies: around the ray, beside it, behind it.
+     */
+    @ParameterizedTest(name = "triangle shifted by ({0}, {1}), at z = {2}")
+    @MethodSource("overflowingTriangles")
+    void edgeFunctionsThatOverflowGiveAMissAndLeaveTheRecord(double dx, double dy, double z) {
+        double big = 1e200;
+        double[] v = {big + dx, big + dy, z, -big + dx, big + dy, z, dx, -big + dy, z};
+        HitRecord hit = new HitRecord();
+        hit.t = 42;
+        Ray ray = new Ray(Point.ZERO, new Vector(0, 0, 1));
+        boolean hits = WatertightTriangle.intersect(
+                v, 0, 3, 6, WatertightTriangle.ALL_EDGES_SHARED, ray, 0, Double.POSITIVE_INFINITY, hit);
+        assertTrue(!hits && hit.t == 42, "a triangle with overflowing edge functions must be missed, record untouched");
+    }
+
+    static Stream<Arguments> overflowingTriangles() {
+        return Stream.of(
+                Arguments.of(0, 0, 5),
+                Arguments.of(0, 0, -5),
+                Arguments.of(3e200, 0, 5),
+                Arguments.of(0, -3e200, 5),
+                Arguments.of(1e199, 1e199, 1e200));
+    }
+
     static Stream<Arguments> seeds() {
         return LongStream.range(0, 20).mapToObj(i -> Arguments.of(0x7A1L + 7L * i));
     }
