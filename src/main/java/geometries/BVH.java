@@ -173,11 +173,9 @@ public final class BVH {
         }
         // A pass over every box, in chunks on all cores where there are many (one core took 7 ms for a million).
         int n = primitiveBounds.length / BOX_STRIDE;
-        int chunks = (n + CHECK_CHUNK - 1) / CHECK_CHUNK;
-        int[] firstBad = new int[chunks];
-        BuildPool.forEach(chunks, parallel && chunks > 1, chunk -> {
-            firstBad[chunk] =
-                    checkAndNormalize(primitiveBounds, chunk * CHECK_CHUNK, Math.min(n, (chunk + 1) * CHECK_CHUNK));
+        int[] firstBad = new int[BuildPool.chunks(n, CHECK_CHUNK)];
+        BuildPool.forEachChunk(n, CHECK_CHUNK, parallel, (chunk, from, to) -> {
+            firstBad[chunk] = checkAndNormalize(primitiveBounds, from, to);
         });
         // The first bad box of all: the first one found by the first chunk that found one.
         for (int bad : firstBad) {

@@ -51,6 +51,32 @@ final class BuildPool {
         });
     }
 
+    /** What {@link #forEachChunk} does for one chunk: indices {@code [from, to)}, the {@code chunk}-th. */
+    @FunctionalInterface
+    interface ChunkAction {
+        void accept(int chunk, int from, int to);
+    }
+
+    /** The number of chunks of {@code size} indices that {@link #forEachChunk} makes of [0, n). */
+    static int chunks(int n, int size) {
+        return (n + size - 1) / size;
+    }
+
+    /**
+     * Calls {@code action} for consecutive chunks of {@code size} indices covering [0, n) (the last one shorter), on
+     * all cores where {@code parallel} and there is more than one chunk: one call per chunk, so a cheap loop over
+     * its indices pays no call per index.
+     *
+     * @param n the number of indices
+     * @param size indices per chunk, positive
+     * @param parallel whether to spread the chunks over the pool's workers
+     * @param action what to do for a chunk (independent of the others when parallel)
+     */
+    static void forEachChunk(int n, int size, boolean parallel, ChunkAction action) {
+        int chunks = chunks(n, size);
+        forEach(chunks, parallel && chunks > 1, c -> action.accept(c, c * size, Math.min(n, (c + 1) * size)));
+    }
+
     /** Whether the calling thread is one of the pool's workers. */
     static boolean isWorker() {
         return Thread.currentThread() instanceof ForkJoinWorkerThread worker && worker.getPool() == pool;

@@ -90,11 +90,8 @@ final class CompiledPrimitives {
      */
     private static int[] positions(int[] order) {
         int[] position = new int[order.length];
-        int chunks = (order.length + PARALLEL_LAYOUT - 1) / PARALLEL_LAYOUT;
-        BuildPool.forEach(chunks, chunks > 1, chunk -> {
-            for (int k = chunk * PARALLEL_LAYOUT, end = Math.min(order.length, k + PARALLEL_LAYOUT); k < end; k++) {
-                position[order[k]] = k;
-            }
+        BuildPool.forEachChunk(order.length, PARALLEL_LAYOUT, true, (chunk, from, to) -> {
+            for (int k = from; k < to; k++) position[order[k]] = k;
         });
         return position;
     }

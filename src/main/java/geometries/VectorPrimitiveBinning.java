@@ -7,12 +7,12 @@ import static geometries.SahSplitter.CENTROID_MIN;
 import static geometries.SahSplitter.MAX;
 import static geometries.SahSplitter.MIN;
 import static geometries.SahSplitter.SUMMARY;
+import static jdk.incubator.vector.VectorOperators.F2D;
 import static jdk.incubator.vector.VectorOperators.GT;
 import static jdk.incubator.vector.VectorOperators.LT;
 
 import jdk.incubator.vector.DoubleVector;
 import jdk.incubator.vector.FloatVector;
-import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
 
 /**
@@ -29,7 +29,6 @@ import jdk.incubator.vector.VectorSpecies;
 final class VectorPrimitiveBinning extends PrimitiveBinning {
     private static final VectorSpecies<Float> CORNER = FloatVector.SPECIES_128;
     private static final VectorSpecies<Double> WIDE = DoubleVector.SPECIES_256;
-    private static final VectorOperators.Conversion<Float, Double> F2D = VectorOperators.F2D;
 
     /** Refuses (and the scalar binning runs) where the CPU has no 256-bit vectors, as {@link VectorWideBoxTest}. */
     VectorPrimitiveBinning() {

@@ -85,7 +85,7 @@ public final class WatertightTriangle {
         double e2 = differenceOfProducts(p0x, p1y, p0y, p1x);
         // Edge functions of both signs: the ray passes outside. Decided from their minimum and maximum, which the JIT
         // computes without branches, so a query pays one unpredictable branch per triangle, not a cascade of up to
-        // six (in-cache incoherent rays 1.05-1.13x). The same answer: a NaN makes both tests false, and a NaN edge
+        // six (in-cache incoherent rays 1.03-1.13x). The same answer: a NaN makes both tests false, and a NaN edge
         // function fails the distance checks below whichever way this goes; -0.0 is neither below nor above 0.
         double lowest = Math.min(e0, Math.min(e1, e2)), highest = Math.max(e0, Math.max(e1, e2));
         if (lowest < 0 & highest > 0) return false;
