@@ -50,7 +50,7 @@ public final class Accelerator implements Intersectable {
         float[] boxes = useBvh && n > 0 ? c.boxes() : null;
         long boxesDone = System.nanoTime();
         // Clear surfaces get a subtree of their own under the root, which shadow queries leave out.
-        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, c.clear) : null;
+        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, LeafFilter.filledLeaf(), c.clear) : null;
         long bvhDone = System.nanoTime();
         boxSeconds = (boxesDone - start) * 1e-9;
         bvhSeconds = (bvhDone - boxesDone) * 1e-9;

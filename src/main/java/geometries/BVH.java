@@ -147,9 +147,19 @@ public final class BVH {
         return build(primitiveBounds, bins, maxLeafSize, Runtime.getRuntime().availableProcessors() > 1, secondGroup);
     }
 
-    /** {@link #build(float[], int, int, boolean, boolean[])}, in parallel where there is more than one core. */
-    static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean[] secondGroup) {
-        return build(primitiveBounds, bins, maxLeafSize, Runtime.getRuntime().availableProcessors() > 1, secondGroup);
+    /**
+     * {@link #build(float[], int, int, boolean, boolean[])}, in parallel where there is more than one core, with every
+     * node of at most {@code filledLeaf} primitives (and {@code maxLeafSize}) a leaf whatever the SAH says: the
+     * accelerator's, whose {@link LeafFilter} tests a leaf of up to four in one call.
+     */
+    static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, int filledLeaf, boolean[] secondGroup) {
+        return build(
+                primitiveBounds,
+                bins,
+                maxLeafSize,
+                filledLeaf,
+                Runtime.getRuntime().availableProcessors() > 1,
+                secondGroup);
     }
 
     static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
@@ -164,6 +174,18 @@ public final class BVH {
      * in place (the same boxes), as {@link PrimitiveBinning#bin} requires.
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
+        return build(primitiveBounds, bins, maxLeafSize, 0, parallel, secondGroup);
+    }
+
+    /** {@link #build(float[], int, int, boolean, boolean[])} with leaves filled as {@link #build(float[], int, int,
+     * int, boolean[])} says. */
+    static BVH build(
+            float[] primitiveBounds,
+            int bins,
+            int maxLeafSize,
+            int filledLeaf,
+            boolean parallel,
+            boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
         if (primitiveBounds.length % BOX_STRIDE != 0) {
             throw new IllegalArgumentException("primitive bounds must hold " + BOX_STRIDE + " values per primitive");
@@ -186,7 +208,7 @@ public final class BVH {
                 }
             }
         }
-        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, parallel, secondGroup), parallel);
+        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, filledLeaf, parallel, secondGroup), parallel);
     }
 
     /** Boxes per chunk of the check in {@link #build(float[], int, int, boolean, boolean[])}. */

@@ -30,6 +30,10 @@ final class ClosestHitTraversal {
     private final BVH bvh;
     /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
+    /** See {@link CompiledPrimitives#leafLanes}: null where leaves are tested one primitive at a time. */
+    private final double[] leafLanes;
+
+    private final LeafFilter leafFilter = LeafFilter.SELECTED;
 
     ClosestHitTraversal(CompiledPrimitives primitives, BVH bvh) {
         boundedCount = primitives.boundedCount;
@@ -40,6 +44,7 @@ final class ClosestHitTraversal {
         unbounded = primitives.unbounded;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
+        leafLanes = primitives.leafLanes;
     }
 
     /** See {@link Accelerator#intersect}. */
@@ -64,7 +69,8 @@ final class ClosestHitTraversal {
         if (!searchesTree) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
-                if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
+                if (testPrimitive(
+                        k, triangles, 9 * k, 1, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
                     tMax = hit.t;
                     tieLimit = Math.nextUp(tMax);
                     best = info[INFO * k + INDEX];
@@ -89,15 +95,29 @@ final class ClosestHitTraversal {
             boolean more = true;
             while (more) {
                 if (count > 0) {
-                    for (int k = link, end = link + count; k < end; k++) {
-                        tests++;
-                        if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
-                            tMax = hit.t;
-                            tMaxF = RaySlabs.above(tMax);
-                            tieLimit = Math.nextUp(tMax);
-                            best = info[INFO * k + INDEX];
-                            bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
-                            bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
+                    tests += count;
+                    // A small leaf's candidates come from the filter, in one call; a larger one's are all of its
+                    // primitives, 64 at a time. Either way they are tested in leaf order, as before.
+                    // A filtered leaf's triangles are tested in its lanes, which the filter brought into the cache.
+                    boolean filtered = count <= LeafFilter.LANES && leafLanes != null;
+                    double[] v = filtered ? leafLanes : triangles;
+                    int step = filtered ? 1 : 9, stride = filtered ? count : 1;
+                    for (int first = link, end = link + count; first < end; first += 64) {
+                        long candidates = filtered
+                                ? leafFilter.candidates(leafLanes, 9 * link, count, ray) & ((1 << count) - 1)
+                                : -1L >>> Math.max(0, 64 - (end - first));
+                        for (; candidates != 0; candidates &= candidates - 1) {
+                            int k = first + Long.numberOfTrailingZeros(candidates);
+                            int a = 9 * link + step * (k - link);
+                            double limit = info[INFO * k + INDEX] < best ? tieLimit : tMax;
+                            if (testPrimitive(k, v, a, stride, ray, tMin, limit, hit)) {
+                                tMax = hit.t;
+                                tMaxF = RaySlabs.above(tMax);
+                                tieLimit = Math.nextUp(tMax);
+                                best = info[INFO * k + INDEX];
+                                bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
+                                bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
+                            }
                         }
                     }
                 } else {
@@ -165,14 +185,15 @@ final class ClosestHitTraversal {
     }
 
     /**
-     * Tests bounded primitive {@code k}. A triangle leaves the record's geometry and part alone (the caller fills
+     * Tests bounded primitive {@code k}, whose coordinates (if it is a triangle) start at {@code v[a]}, {@code stride}
+     * apart: in {@link #triangles} or its leaf's lanes. A triangle leaves the record's geometry and part alone (the caller fills
      * them for the final hit only: fewer arrays touched per test); other shapes fill them.
      */
-    private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
+    private boolean testPrimitive(
+            int k, double[] v, int a, int stride, Ray ray, double tMin, double tMax, HitRecord hit) {
         int edges = info[INFO * k + EDGES];
         if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
-        int o = 9 * k;
-        return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
+        return WatertightTriangle.intersect(v, a, a + 3 * stride, a + 6 * stride, stride, edges, ray, tMin, tMax, hit);
     }
 
     /**

@@ -57,6 +57,14 @@ final class CompiledPrimitives {
     final boolean searchesTree;
 
     /**
+     * The coordinates of the triangles of each leaf of at most {@link LeafFilter#LANES} primitives, lane by lane, for
+     * {@link LeafFilter}: the leaf at {@code link} with {@code count} primitives has its i-th one's coordinate j of
+     * vertex v at {@code 9 link + count (3 v + j) + i} (NaN where it is not a triangle, which the filter passes on).
+     * The same space as {@link #triangles} plus a vector's padding. Null without a filter or a tree.
+     */
+    final double[] leafLanes;
+
+    /**
      * Lays out the primitives {@code c} collected in the leaf order of {@code bvh}, or in insertion order when
      * {@code bvh} is null.
      */
@@ -75,6 +83,7 @@ final class CompiledPrimitives {
         // were collected, so that reading a mesh's vertices and the collector's arrays runs through memory in order
         // and only the writes land where the leaves put them.
         BuildPool.forEach(n, n >= PARALLEL_LAYOUT, i -> layOut(c, i, position == null ? i : position[i]));
+        leafLanes = searchesTree && LeafFilter.SELECTED != null ? leafLanes(bvh) : null;
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];
@@ -119,9 +128,46 @@ final class CompiledPrimitives {
         }
     }
 
+    /** {@link #leafLanes} of the leaves of {@code bvh}, written node by node (on all cores for large trees). */
+    private double[] leafLanes(BVH bvh) {
+        double[] lanes = new double[triangles.length + LeafFilter.LANES];
+        float[] nodes = bvh.nodes;
+        int nodeCount = nodes.length / BVH.NODE_STRIDE;
+        if (bvh.rootCount > 0) writeLanes(lanes, bvh.rootLink, bvh.rootCount);
+        BuildPool.forEachChunk(nodeCount, PARALLEL_LAYOUT / BVH.WIDTH, true, (chunk, from, to) -> {
+            for (int node = from; node < to; node++) {
+                for (int c = 0; c < BVH.WIDTH; c++) {
+                    int o = BVH.NODE_STRIDE * node;
+                    int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                    if (count > 0) writeLanes(lanes, Float.floatToRawIntBits(nodes[o + BVH.LINK + c]), count);
+                }
+            }
+        });
+        return lanes;
+    }
+
+    /** Writes the lanes of the leaf of {@code count} primitives at {@code link}, if it is small enough to filter. */
+    private void writeLanes(double[] lanes, int link, int count) {
+        if (count <= LeafFilter.LANES) writeLanes(lanes, triangles, objects, link, count);
+    }
+
+    /**
+     * Writes the lanes of the leaf of {@code count} primitives at {@code link} from the triangles' coordinates in
+     * {@code triangles} (nine per primitive in leaf order), NaN for the primitives that {@code objects} holds.
+     */
+    static void writeLanes(double[] lanes, double[] triangles, Intersectable[] objects, int link, int count) {
+        for (int i = 0; i < count; i++) {
+            int k = link + i;
+            for (int j = 0; j < 9; j++) {
+                lanes[9 * link + count * j + i] = objects[k] == null ? triangles[9 * k + j] : Double.NaN;
+            }
+        }
+    }
+
     /** Bytes of the flat arrays of the bounded primitives. */
     long bytes() {
         return 8L * triangles.length
+                + (leafLanes == null ? 0 : 8L * leafLanes.length)
                 + 4L * info.length
                 + 8L * (geometries.length + objects.length)
                 + 2L * mayTransmit.length;

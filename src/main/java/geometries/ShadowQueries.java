@@ -39,6 +39,10 @@ final class ShadowQueries {
     private final boolean searchesTree;
     /** See {@link Accelerator#testsShadowPackets}. */
     final boolean testsPackets;
+    /** See {@link CompiledPrimitives#leafLanes}: null where leaves are tested one primitive at a time. */
+    private final double[] leafLanes;
+
+    private final LeafFilter leafFilter = LeafFilter.SELECTED;
 
     ShadowQueries(CompiledPrimitives primitives, BVH bvh) {
         boundedCount = primitives.boundedCount;
@@ -53,6 +57,7 @@ final class ShadowQueries {
         unboundedClear = primitives.unboundedClear;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
+        leafLanes = primitives.leafLanes;
         boolean objectsOnly = true;
         // Up to the first triangle (a mesh's is the first primitive: no pass over a million records).
         for (int k = 0; k < boundedCount && objectsOnly; k++) objectsOnly = info[INFO * k + EDGES] == OBJECT;
@@ -126,11 +131,17 @@ final class ShadowQueries {
                 for (; mask != 0; mask &= mask - 1) {
                     int c = Integer.numberOfTrailingZeros(mask);
                     int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
-                    int end = link + Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                    for (int k = link; k < end; k++) {
+                    int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
+                    int candidates = candidates(link, count, ray);
+                    boolean filtered = count <= LeafFilter.LANES && leafLanes != null;
+                    double[] v = filtered ? leafLanes : triangles;
+                    int step = filtered ? 1 : 9, stride = filtered ? count : 1;
+                    for (int k = link, end = link + count; k < end; k++) {
                         if (clear[k] || leftBy(k, scratch)) continue;
                         tests++;
-                        if (blocks(k, mayTransmit[k], ray, tMin, tMax, scratch)) {
+                        if ((candidates >> (k - link) & 1) == 0) continue;
+                        int a = 9 * link + step * (k - link);
+                        if (blocks(k, v, a, stride, mayTransmit[k], ray, tMin, tMax, scratch)) {
                             if (!mayTransmit[k]) scratch.occluder = k;
                             return true;
                         }
@@ -195,10 +206,17 @@ final class ShadowQueries {
             try {
                 while (more) {
                     if (count > 0) {
+                        int candidates = candidates(link, count, ray);
+                        boolean filtered = count <= LeafFilter.LANES && leafLanes != null;
+                        double[] v = filtered ? leafLanes : triangles;
+                        int step = filtered ? 1 : 9, stride = filtered ? count : 1;
                         for (int k = link, end = link + count; k < end; k++) {
                             if (honourTransparency && clear[k] || leftBy(k, scratch)) continue;
                             tests++;
-                            if (blocks(k, honourTransparency && mayTransmit[k], ray, tMin, tMax, scratch)) {
+                            if ((candidates >> (k - link) & 1) == 0) continue;
+                            int a = 9 * link + step * (k - link);
+                            boolean pass = honourTransparency && mayTransmit[k];
+                            if (blocks(k, v, a, stride, pass, ray, tMin, tMax, scratch)) {
                                 if (!mayTransmit[k]) scratch.occluder = k;
                                 return true;
                             }
@@ -239,6 +257,17 @@ final class ShadowQueries {
     }
 
     /**
+     * The leaf's primitives that may block the ray, bit i for the i-th: the {@link LeafFilter}'s candidates for a
+     * small leaf, all of them (every bit) otherwise. The rest would be missed by their own test: skipping them changes
+     * nothing but the time.
+     */
+    private int candidates(int link, int count, Ray ray) {
+        return count <= LeafFilter.LANES && leafLanes != null
+                ? leafFilter.candidates(leafLanes, 9 * link, count, ray)
+                : -1;
+    }
+
+    /**
      * Whether bounded primitive {@code k} is (part of) the flat surface the query's segment leaves
      * ({@link HitRecord#leaveSurface}), which it cannot meet again.
      */
@@ -266,10 +295,27 @@ final class ShadowQueries {
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */
     private boolean blocks(int k, boolean mayPass, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        return blocks(k, triangles, 9 * k, 1, mayPass, ray, tMin, tMax, scratch);
+    }
+
+    /**
+     * {@link #blocks(int, boolean, Ray, double, double, HitRecord)} with a triangle's coordinates read from
+     * {@code v[a]} on, {@code stride} apart: in {@link #triangles} or its leaf's lanes.
+     */
+    private boolean blocks(
+            int k,
+            double[] v,
+            int a,
+            int stride,
+            boolean mayPass,
+            Ray ray,
+            double tMin,
+            double tMax,
+            HitRecord scratch) {
         int edges = info[INFO * k + EDGES];
         if (edges == OBJECT) return blocks(objects[k], info[INFO * k + INDEX], mayPass, ray, tMin, tMax, scratch);
-        int o = 9 * k;
-        if (!WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, scratch)) {
+        if (!WatertightTriangle.intersect(
+                v, a, a + 3 * stride, a + 6 * stride, stride, edges, ray, tMin, tMax, scratch)) {
             return false;
         }
         if (!mayPass) return true;

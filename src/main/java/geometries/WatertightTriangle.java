@@ -57,9 +57,31 @@ public final class WatertightTriangle {
      */
     public static boolean intersect(
             double[] v, int a, int b, int c, int sharedEdges, Ray ray, double tMin, double tMax, HitRecord hit) {
+        return intersect(v, a, b, c, 1, sharedEdges, ray, tMin, tMax, hit);
+    }
+
+    /**
+     * {@link #intersect(double[], int, int, int, int, Ray, double, double, HitRecord)} for vertices whose coordinates
+     * lie {@code stride} apart in {@code v} (x at {@code v[a]}, y at {@code v[a + stride]}, z at
+     * {@code v[a + 2 stride]}): the lanes of a BVH leaf ({@link CompiledPrimitives#leafLanes}) hold a triangle so.
+     */
+    static boolean intersect(
+            double[] v,
+            int a,
+            int b,
+            int c,
+            int stride,
+            int sharedEdges,
+            Ray ray,
+            double tMin,
+            double tMax,
+            HitRecord hit) {
         // Translate to the ray origin and permute so that z is the ray's dominant axis.
         int kx = ray.kx(), ky = ray.ky(), kz = ray.kz();
         double ox = coordinate(ray, kx), oy = coordinate(ray, ky), oz = coordinate(ray, kz);
+        kx *= stride;
+        ky *= stride;
+        kz *= stride;
         double p0x = v[a + kx] - ox;
         double p0y = v[a + ky] - oy;
         double p0z = v[a + kz] - oz;

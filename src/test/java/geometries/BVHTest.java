@@ -80,6 +80,22 @@ class BVHTest {
         assertEquals(1, together.leafCount(), "four overlapping boxes stay one leaf");
     }
 
+    /**
+     * Where leaves are filled ({@link LeafFilter}: the accelerator's tree), every node of at most that many primitives
+     * is a leaf even where the SAH would split it, but never past the largest leaf allowed.
+     */
+    @Test
+    void filledLeavesTakeEverySmallGroupUpToTheLargestLeafAllowed() {
+        double s = 0.01;
+        double[] corners = {0, 0, 0, s, s, s, 1, 0, 0, 1 + s, s, s, 0, 1, 0, s, 1 + s, s, 1, 1, 0, 1 + s, 1 + s, s};
+        assertEquals(
+                1, BVH.build(BVH.roundedOutward(corners), 16, 4, 4, false, null).leafCount());
+        assertEquals(
+                2, BVH.build(BVH.roundedOutward(corners), 16, 2, 4, false, null).leafCount());
+        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, 0, false, null).leafCount() > 1);
+        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, 3, false, null).leafCount() > 1);
+    }
+
     static Stream<Arguments> cases() {
         return LongStream.range(0, 8)
                 .mapToObj(i -> Arguments.of(0xB7L + 13L * i, (int) (1 + i * i * 37), (int) (1 + i % 4)));
