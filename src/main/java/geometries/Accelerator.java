@@ -50,11 +50,12 @@ public final class Accelerator implements Intersectable {
         float[] boxes = useBvh && n > 0 ? c.boxes() : null;
         long boxesDone = System.nanoTime();
         // Clear surfaces get a subtree of their own under the root, which shadow queries leave out.
-        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, LeafFilter.filledLeaf(), c.clear) : null;
+        FilledLeaves filled = boxes != null ? filledLeaves(c) : FilledLeaves.NONE;
+        bvh = boxes != null ? BVH.build(boxes, bins, maxLeafSize, filled, c.clear) : null;
         long bvhDone = System.nanoTime();
         boxSeconds = (boxesDone - start) * 1e-9;
         bvhSeconds = (bvhDone - boxesDone) * 1e-9;
-        primitives = new CompiledPrimitives(c, bvh);
+        primitives = new CompiledPrimitives(c, bvh, filled);
         java.util.Set<Prototype> placed = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
         for (Intersectable object : primitives.objects) {
             if (object instanceof Instance instance) placed.add(instance.prototype());
@@ -105,6 +106,34 @@ public final class Accelerator implements Intersectable {
      */
     public BVH getBvh() {
         return bvh;
+    }
+
+    /** Whether some leaves are filled and tested by the {@link LeafFilter}: there is a filter and a large mesh. */
+    boolean filtersLeaves() {
+        return primitives.leafLanes != null;
+    }
+
+    /**
+     * Which primitives the {@link LeafFilter} takes, in leaves it fills: the triangles of meshes of at least {@link
+     * LeafFilter#MIN_MESH} triangles; none without a filter.
+     */
+    private static FilledLeaves filledLeaves(PrimitiveCollector c) {
+        if (LeafFilter.SELECTED == null) return FilledLeaves.NONE;
+        Geometry[] owners = c.ownerTable();
+        boolean[] large = new boolean[owners.length];
+        boolean anyLarge = false;
+        for (int s = 0; s < owners.length; s++) {
+            large[s] = owners[s] instanceof Mesh mesh && mesh.triangleCount() >= LeafFilter.MIN_MESH;
+            anyLarge |= large[s];
+        }
+        if (!anyLarge) return FilledLeaves.NONE;
+        boolean[] filterable = new boolean[c.count];
+        boolean all = true;
+        for (int i = 0; i < c.count; i++) {
+            filterable[i] = c.objects[i] == null && large[c.owners[i]];
+            all &= filterable[i];
+        }
+        return new FilledLeaves(LeafFilter.LANES, all ? null : filterable);
     }
 
     /**

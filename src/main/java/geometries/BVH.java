@@ -148,16 +148,16 @@ public final class BVH {
     }
 
     /**
-     * {@link #build(float[], int, int, boolean, boolean[])}, in parallel where there is more than one core, with every
-     * node of at most {@code filledLeaf} primitives (and {@code maxLeafSize}) a leaf whatever the SAH says: the
-     * accelerator's, whose {@link LeafFilter} tests a leaf of up to four in one call.
+     * {@link #build(float[], int, int, boolean, boolean[])}, in parallel where there is more than one core, with the
+     * groups {@code filled} names (within {@code maxLeafSize}) made leaves whatever the SAH says: the accelerator's,
+     * whose {@link LeafFilter} tests a leaf of up to four triangles in one call.
      */
-    static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, int filledLeaf, boolean[] secondGroup) {
+    static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, FilledLeaves filled, boolean[] secondGroup) {
         return build(
                 primitiveBounds,
                 bins,
                 maxLeafSize,
-                filledLeaf,
+                filled,
                 Runtime.getRuntime().availableProcessors() > 1,
                 secondGroup);
     }
@@ -174,16 +174,15 @@ public final class BVH {
      * in place (the same boxes), as {@link PrimitiveBinning#bin} requires.
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
-        return build(primitiveBounds, bins, maxLeafSize, 0, parallel, secondGroup);
+        return build(primitiveBounds, bins, maxLeafSize, FilledLeaves.NONE, parallel, secondGroup);
     }
 
-    /** {@link #build(float[], int, int, boolean, boolean[])} with leaves filled as {@link #build(float[], int, int,
-     * int, boolean[])} says. */
+    /** {@link #build(float[], int, int, boolean, boolean[])} with the groups {@code filled} names made leaves. */
     static BVH build(
             float[] primitiveBounds,
             int bins,
             int maxLeafSize,
-            int filledLeaf,
+            FilledLeaves filled,
             boolean parallel,
             boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
@@ -208,7 +207,7 @@ public final class BVH {
                 }
             }
         }
-        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, filledLeaf, parallel, secondGroup), parallel);
+        return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, filled, parallel, secondGroup), parallel);
     }
 
     /** Boxes per chunk of the check in {@link #build(float[], int, int, boolean, boolean[])}. */

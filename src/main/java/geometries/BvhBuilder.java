@@ -16,8 +16,8 @@ final class BvhBuilder {
     final int[] index;
     private final int bins;
     private final int maxLeafSize;
-    /** Nodes of at most this many primitives (and {@link #maxLeafSize}) become leaves: {@link SahSplitter}. */
-    private final int filledLeaf;
+    /** The small groups made leaves whatever the SAH says (within {@link #maxLeafSize}). */
+    private final FilledLeaves filled;
     /** Decides this builder's nodes. */
     private final SahSplitter splitter;
 
@@ -43,8 +43,8 @@ final class BvhBuilder {
      * the trees of the other primitives and of those (each built as usual), so a query that needs only the first
      * group can leave the second's subtree out.
      */
-    BvhBuilder(float[] boxes, int bins, int maxLeafSize, int filledLeaf, boolean parallel, boolean[] secondGroup) {
-        this(boxes, grouped(boxes.length / BVH.BOX_STRIDE, secondGroup), bins, maxLeafSize, filledLeaf);
+    BvhBuilder(float[] boxes, int bins, int maxLeafSize, FilledLeaves filled, boolean parallel, boolean[] secondGroup) {
+        this(boxes, grouped(boxes.length / BVH.BOX_STRIDE, secondGroup), bins, maxLeafSize, filled);
         int n = index.length;
         int split = firstOfSecondGroup(n, secondGroup);
         grouped = split > 0;
@@ -118,13 +118,13 @@ final class BvhBuilder {
     }
 
     /** A builder over a shared {@code index}; {@link #allocate} gives it room for nodes. */
-    private BvhBuilder(float[] boxes, int[] index, int bins, int maxLeafSize, int filledLeaf) {
+    private BvhBuilder(float[] boxes, int[] index, int bins, int maxLeafSize, FilledLeaves filled) {
         this.boxes = boxes;
         this.index = index;
         this.bins = bins;
         this.maxLeafSize = maxLeafSize;
-        this.filledLeaf = filledLeaf;
-        splitter = new SahSplitter(boxes, index, bins, maxLeafSize, filledLeaf);
+        this.filled = filled;
+        splitter = new SahSplitter(boxes, index, bins, maxLeafSize, filled);
     }
 
     /**
@@ -161,7 +161,7 @@ final class BvhBuilder {
 
     /** Builds {@code [start, end)} (summarized at {@code summary[at..]}) by a builder of its own. */
     private Subtree subtree(int start, int end, int depth, double[] summary, int at) {
-        BvhBuilder builder = new BvhBuilder(boxes, index, bins, maxLeafSize, filledLeaf);
+        BvhBuilder builder = new BvhBuilder(boxes, index, bins, maxLeafSize, filled);
         if (end - start <= BVH.PARALLEL_GRAIN && BuildPool.isWorker()) {
             Room room = ROOM.get();
             builder.bounds = room.bounds();
@@ -191,7 +191,7 @@ final class BvhBuilder {
      */
     private Object plan(int start, int end, int depth, double[] summary, int at) {
         if (end - start <= BVH.PARALLEL_GRAIN) return subtree(start, end, depth, summary, at);
-        SahSplitter top = new SahSplitter(boxes, index, bins, maxLeafSize, filledLeaf);
+        SahSplitter top = new SahSplitter(boxes, index, bins, maxLeafSize, filled);
         float[] box = new float[6];
         SahSplitter.roundedBox(summary, at, box, 0);
         int mid = top.split(start, end, depth, summary, at);

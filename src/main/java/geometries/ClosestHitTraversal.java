@@ -69,8 +69,7 @@ final class ClosestHitTraversal {
         if (!searchesTree) {
             for (int k = 0; k < boundedCount; k++) {
                 tests++;
-                if (testPrimitive(
-                        k, triangles, 9 * k, 1, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
+                if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
                     tMax = hit.t;
                     tieLimit = Math.nextUp(tMax);
                     best = info[INFO * k + INDEX];
@@ -94,30 +93,27 @@ final class ClosestHitTraversal {
             // No test of the root's own box: visiting the root tests its children's boxes, which lie inside it.
             boolean more = true;
             while (more) {
-                if (count > 0) {
+                if (count > 0 && isFilled(link, count)) {
                     tests += count;
-                    // A small leaf's candidates come from the filter, in one call; a larger one's are all of its
-                    // primitives, 64 at a time. Either way they are tested in leaf order, as before.
-                    // A filtered leaf's triangles are tested in its lanes, which the filter brought into the cache.
-                    boolean filtered = count <= LeafFilter.LANES && leafLanes != null;
-                    double[] v = filtered ? leafLanes : triangles;
-                    int step = filtered ? 1 : 9, stride = filtered ? count : 1;
-                    for (int first = link, end = link + count; first < end; first += 64) {
-                        long candidates = filtered
-                                ? leafFilter.candidates(leafLanes, 9 * link, count, ray) & ((1 << count) - 1)
-                                : -1L >>> Math.max(0, 64 - (end - first));
-                        for (; candidates != 0; candidates &= candidates - 1) {
-                            int k = first + Long.numberOfTrailingZeros(candidates);
-                            int a = 9 * link + step * (k - link);
-                            double limit = info[INFO * k + INDEX] < best ? tieLimit : tMax;
-                            if (testPrimitive(k, v, a, stride, ray, tMin, limit, hit)) {
-                                tMax = hit.t;
-                                tMaxF = RaySlabs.above(tMax);
-                                tieLimit = Math.nextUp(tMax);
-                                best = info[INFO * k + INDEX];
-                                bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
-                                bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
-                            }
+                    int k = filledLeafHit(link, count, ray, tMin, tMax, tieLimit, best, hit);
+                    if (k >= 0) {
+                        tMax = hit.t;
+                        tMaxF = RaySlabs.above(tMax);
+                        tieLimit = Math.nextUp(tMax);
+                        best = info[INFO * k + INDEX];
+                        bestTriangle = k;
+                        bestObject = -1;
+                    }
+                } else if (count > 0) {
+                    for (int k = link, end = link + count; k < end; k++) {
+                        tests++;
+                        if (testPrimitive(k, ray, tMin, info[INFO * k + INDEX] < best ? tieLimit : tMax, hit)) {
+                            tMax = hit.t;
+                            tMaxF = RaySlabs.above(tMax);
+                            tieLimit = Math.nextUp(tMax);
+                            best = info[INFO * k + INDEX];
+                            bestTriangle = info[INFO * k + EDGES] == OBJECT ? -1 : k;
+                            bestObject = info[INFO * k + EDGES] == OBJECT ? k : -1;
                         }
                     }
                 } else {
@@ -185,15 +181,44 @@ final class ClosestHitTraversal {
     }
 
     /**
-     * Tests bounded primitive {@code k}, whose coordinates (if it is a triangle) start at {@code v[a]}, {@code stride}
-     * apart: in {@link #triangles} or its leaf's lanes. A triangle leaves the record's geometry and part alone (the caller fills
+     * Tests bounded primitive {@code k}. A triangle leaves the record's geometry and part alone (the caller fills
      * them for the final hit only: fewer arrays touched per test); other shapes fill them.
      */
-    private boolean testPrimitive(
-            int k, double[] v, int a, int stride, Ray ray, double tMin, double tMax, HitRecord hit) {
+    private boolean testPrimitive(int k, Ray ray, double tMin, double tMax, HitRecord hit) {
         int edges = info[INFO * k + EDGES];
         if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
-        return WatertightTriangle.intersect(v, a, a + 3 * stride, a + 6 * stride, stride, edges, ray, tMin, tMax, hit);
+        int o = 9 * k;
+        return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
+    }
+
+    /** Whether the leaf of {@code count} at {@code link} is a filled one, with lanes: {@link #filledLeafHit}. */
+    private boolean isFilled(int link, int count) {
+        return count <= LeafFilter.LANES && leafLanes != null && !Double.isNaN(leafLanes[9 * link]);
+    }
+
+    /**
+     * Tests the filled leaf of {@code count} at {@code link} (triangles of a large mesh only) as the search's loop tests
+     * a leaf, and returns the position of the triangle it ends on, whose hit is in the record, or -1 if none is
+     * closer. Only the filter's candidates are tested (in the leaf's lanes, in leaf order); the rest would be missed by
+     * their own test. Its own method, called from the loop: the loop stays as small as it was for other leaves.
+     */
+    private int filledLeafHit(
+            int link, int count, Ray ray, double tMin, double tMax, double tieLimit, int best, HitRecord hit) {
+        int candidates = count > 1 ? leafFilter.candidates(leafLanes, 9 * link, count, ray) & ((1 << count) - 1) : 1;
+        int found = -1;
+        for (; candidates != 0; candidates &= candidates - 1) {
+            int i = Integer.numberOfTrailingZeros(candidates), k = link + i, a = 9 * link + i;
+            int index = info[INFO * k + INDEX], edges = info[INFO * k + EDGES];
+            double limit = index < best ? tieLimit : tMax;
+            if (WatertightTriangle.intersect(
+                    leafLanes, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, limit, hit)) {
+                tMax = hit.t;
+                tieLimit = Math.nextUp(tMax);
+                best = index;
+                found = k;
+            }
+        }
+        return found;
     }
 
     /**

@@ -57,10 +57,11 @@ final class CompiledPrimitives {
     final boolean searchesTree;
 
     /**
-     * The coordinates of the triangles of each leaf of at most {@link LeafFilter#LANES} primitives, lane by lane, for
-     * {@link LeafFilter}: the leaf at {@code link} with {@code count} primitives has its i-th one's coordinate j of
-     * vertex v at {@code 9 link + count (3 v + j) + i} (NaN where it is not a triangle, which the filter passes on).
-     * The same space as {@link #triangles} plus a vector's padding. Null without a filter or a tree.
+     * The coordinates of the triangles of each filled leaf ({@link FilledLeaves}: of at most {@link LeafFilter#LANES}
+     * triangles of large meshes), lane by lane, for {@link LeafFilter}: the leaf at {@code link} with {@code count}
+     * primitives has its i-th one's coordinate j of vertex v at {@code 9 link + count (3 v + j) + i}. Any other leaf of
+     * at most {@link LeafFilter#LANES} has NaN at {@code 9 link}: the traversals test it from {@link #triangles}. The
+     * same space as {@link #triangles} plus a vector's padding. Null without a filter, a tree or a large mesh.
      */
     final double[] leafLanes;
 
@@ -69,6 +70,11 @@ final class CompiledPrimitives {
      * {@code bvh} is null.
      */
     CompiledPrimitives(PrimitiveCollector c, BVH bvh) {
+        this(c, bvh, FilledLeaves.NONE);
+    }
+
+    /** Lays out as {@link #CompiledPrimitives(PrimitiveCollector, BVH)}, with lanes for the leaves {@code filled} takes. */
+    CompiledPrimitives(PrimitiveCollector c, BVH bvh, FilledLeaves filled) {
         int n = c.count;
         boundedCount = n;
         searchesTree = bvh != null && n > 1;
@@ -83,7 +89,7 @@ final class CompiledPrimitives {
         // were collected, so that reading a mesh's vertices and the collector's arrays runs through memory in order
         // and only the writes land where the leaves put them.
         BuildPool.forEach(n, n >= PARALLEL_LAYOUT, i -> layOut(c, i, position == null ? i : position[i]));
-        leafLanes = searchesTree && LeafFilter.SELECTED != null ? leafLanes(bvh) : null;
+        leafLanes = searchesTree && filled.size() > 0 ? leafLanes(bvh, filled) : null;
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];
@@ -128,27 +134,36 @@ final class CompiledPrimitives {
         }
     }
 
-    /** {@link #leafLanes} of the leaves of {@code bvh}, written node by node (on all cores for large trees). */
-    private double[] leafLanes(BVH bvh) {
+    /**
+     * {@link #leafLanes} of the leaves of {@code bvh} that {@code filled} takes, written node by node (on all cores for
+     * large trees); another leaf small enough to be filtered is marked by a NaN first coordinate.
+     */
+    private double[] leafLanes(BVH bvh, FilledLeaves filled) {
         double[] lanes = new double[triangles.length + LeafFilter.LANES];
         float[] nodes = bvh.nodes;
         int nodeCount = nodes.length / BVH.NODE_STRIDE;
-        if (bvh.rootCount > 0) writeLanes(lanes, bvh.rootLink, bvh.rootCount);
+        if (bvh.rootCount > 0) writeLanes(lanes, bvh, filled, bvh.rootLink, bvh.rootCount);
         BuildPool.forEachChunk(nodeCount, PARALLEL_LAYOUT / BVH.WIDTH, true, (chunk, from, to) -> {
             for (int node = from; node < to; node++) {
                 for (int c = 0; c < BVH.WIDTH; c++) {
                     int o = BVH.NODE_STRIDE * node;
                     int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                    if (count > 0) writeLanes(lanes, Float.floatToRawIntBits(nodes[o + BVH.LINK + c]), count);
+                    if (count > 0)
+                        writeLanes(lanes, bvh, filled, Float.floatToRawIntBits(nodes[o + BVH.LINK + c]), count);
                 }
             }
         });
         return lanes;
     }
 
-    /** Writes the lanes of the leaf of {@code count} primitives at {@code link}, if it is small enough to filter. */
-    private void writeLanes(double[] lanes, int link, int count) {
-        if (count <= LeafFilter.LANES) writeLanes(lanes, triangles, objects, link, count);
+    /** Writes the lanes of the leaf of {@code count} primitives at {@code link}, or its mark if it has none. */
+    private void writeLanes(double[] lanes, BVH bvh, FilledLeaves filled, int link, int count) {
+        if (count > LeafFilter.LANES) return;
+        if (filled.fill(bvh.order, link, link + count)) {
+            writeLanes(lanes, triangles, objects, link, count);
+        } else {
+            lanes[9 * link] = Double.NaN;
+        }
     }
 
     /**

@@ -26,12 +26,8 @@ final class SahSplitter {
     private final float[] boxes;
     private final int[] index;
     private final int maxLeafSize;
-    /**
-     * Primitives a node may hold to become a leaf whatever the SAH says (if {@link #maxLeafSize} allows): where the
-     * {@link LeafFilter} tests a leaf of up to four in one call, about the cost of one triangle test, a split of such
-     * a node saves nothing (Embree's SAH prices a leaf by its blocks of four so); 0 for the SAH alone.
-     */
-    private final int filledLeaf;
+    /** The small groups made leaves whatever the SAH says. */
+    private final FilledLeaves filled;
     /** The bins of the node being split. */
     private final SahBins bins;
     /** Per used bin, in order, the area of the union of it and the used bins after it. */
@@ -45,8 +41,8 @@ final class SahSplitter {
      * A splitter over primitives given by their boxes ({@link BVH#BOX_STRIDE} floats each, {@link
      * PrimitiveCollector#boxes}) and reached through {@code index}, which it partitions.
      */
-    SahSplitter(float[] boxes, int[] index, int bins, int maxLeafSize, int filledLeaf) {
-        this.filledLeaf = filledLeaf;
+    SahSplitter(float[] boxes, int[] index, int bins, int maxLeafSize, FilledLeaves filled) {
+        this.filled = filled;
         this.boxes = boxes;
         this.index = index;
         this.maxLeafSize = maxLeafSize;
@@ -102,7 +98,9 @@ final class SahSplitter {
         int min = at + MIN, max = at + MAX;
         double nodeArea = surfaceArea(
                 summary[min], summary[min + 1], summary[min + 2], summary[max], summary[max + 1], summary[max + 2]);
-        if (count <= maxLeafSize && (count <= filledLeaf || leafIsCheaper(start, end, nodeArea, count))) return -1;
+        if (count <= maxLeafSize && (filled.fill(index, start, end) || leafIsCheaper(start, end, nodeArea, count))) {
+            return -1;
+        }
         return sahPartition(start, end, depth, summary, at, axis, nodeArea);
     }
 

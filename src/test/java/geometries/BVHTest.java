@@ -81,19 +81,38 @@ class BVHTest {
     }
 
     /**
-     * Where leaves are filled ({@link LeafFilter}: the accelerator's tree), every node of at most that many primitives
-     * is a leaf even where the SAH would split it, but never past the largest leaf allowed.
+     * Where leaves are filled ({@link LeafFilter}: the accelerator's tree), every node of at most that many primitives,
+     * all of which the filter takes, is a leaf even where the SAH would split it, but never past the largest leaf
+     * allowed.
      */
     @Test
     void filledLeavesTakeEverySmallGroupUpToTheLargestLeafAllowed() {
         double s = 0.01;
         double[] corners = {0, 0, 0, s, s, s, 1, 0, 0, 1 + s, s, s, 0, 1, 0, s, 1 + s, s, 1, 1, 0, 1 + s, 1 + s, s};
         assertEquals(
-                1, BVH.build(BVH.roundedOutward(corners), 16, 4, 4, false, null).leafCount());
+                1,
+                BVH.build(BVH.roundedOutward(corners), 16, 4, new FilledLeaves(4, null), false, null)
+                        .leafCount());
         assertEquals(
-                2, BVH.build(BVH.roundedOutward(corners), 16, 2, 4, false, null).leafCount());
-        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, 0, false, null).leafCount() > 1);
-        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, 3, false, null).leafCount() > 1);
+                2,
+                BVH.build(BVH.roundedOutward(corners), 16, 2, new FilledLeaves(4, null), false, null)
+                        .leafCount());
+        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, FilledLeaves.NONE, false, null)
+                        .leafCount()
+                > 1);
+        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, new FilledLeaves(3, null), false, null)
+                        .leafCount()
+                > 1);
+        // A group with a primitive the filter does not take (a sphere, say) is left to the SAH.
+        FilledLeaves oneNotFiltered = new FilledLeaves(4, new boolean[] {true, true, false, true});
+        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, oneNotFiltered, false, null)
+                        .leafCount()
+                > 1);
+        FilledLeaves allFiltered = new FilledLeaves(4, new boolean[] {true, true, true, true});
+        assertEquals(
+                1,
+                BVH.build(BVH.roundedOutward(corners), 16, 4, allFiltered, false, null)
+                        .leafCount());
     }
 
     static Stream<Arguments> cases() {

@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -29,11 +30,27 @@ class LeafFilterTest {
     void theFilterRunsExactlyWhereTheVectorKernelsDo() throws ReflectiveOperationException {
         if (VectorSupport.available()) {
             assertNotNull(LeafFilter.SELECTED);
-            assertEquals(LeafFilter.LANES, LeafFilter.filledLeaf());
         } else {
             assertNull(LeafFilter.SELECTED);
-            assertEquals(0, LeafFilter.filledLeaf());
         }
+    }
+
+    /**
+     * Leaves are filled and filtered for the triangles of meshes of at least {@link LeafFilter#MIN_MESH} triangles only:
+     * an icosphere of 1,280, alone or among spheres, but not one of 320, nor a scene of spheres.
+     */
+    @Test
+    void onlyLargeMeshesAreFiltered() throws ReflectiveOperationException {
+        boolean available = VectorSupport.available();
+        assertTrue(Meshes.icosphere(3).triangleCount() >= LeafFilter.MIN_MESH);
+        assertEquals(available, Accelerator.build(Meshes.icosphere(3), true).filtersLeaves());
+        Geometries mixed = new Geometries(Meshes.icosphere(3), new Sphere(new Point(3, 0, 0), 1));
+        assertEquals(available, Accelerator.build(mixed, true).filtersLeaves());
+        assertTrue(Meshes.icosphere(2).triangleCount() < LeafFilter.MIN_MESH);
+        assertFalse(Accelerator.build(Meshes.icosphere(2), true).filtersLeaves());
+        Geometries spheres = new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1));
+        assertFalse(Accelerator.build(spheres, true).filtersLeaves());
+        assertFalse(Accelerator.build(Meshes.icosphere(3), false).filtersLeaves(), "no tree, no filter");
     }
 
     static LongStream seeds() {
