@@ -16,7 +16,8 @@ import primitives.Vector;
 
 /**
  * JMH micro-benchmarks of the BVH kernels, each reported as nanoseconds per operation: the ray-box slab test the
- * traversal runs on float child boxes, the watertight ray-triangle test, and full closest-hit traversals of the
+ * traversal runs on float child boxes, the watertight ray-triangle test, a leaf of four triangles tested one by one
+ * and through the leaf filter, and full closest-hit traversals of the
  * 100k-triangle heightfield with coherent and incoherent rays. It lives in package {@code geometries} to reach the
  * package-private kernels. Run with {@code mvn -q -Pjmh clean compile exec:exec}.
  */
@@ -40,6 +41,11 @@ public class KernelBenchmark {
 
     HitRecord hit = new HitRecord();
 
+    /** Four triangles, the one above and three moved copies, as nine doubles each and as a leaf's lanes. */
+    double[] fourTriangles = new double[4 * 9];
+
+    double[] fourLanes = new double[4 * 9 + LeafFilter.LANES];
+
     @Setup
     public void setUp() {
         heightfield = Accelerator.build(Meshes.heightfield(224), true);
@@ -52,6 +58,10 @@ public class KernelBenchmark {
         }
         incoherent = RaySets.incoherent(heightfield.getBoundingBox(), RAYS, 20240613L);
         boxes = java.util.Arrays.copyOf(heightfield.getBvh().nodes, BVH.NODE_STRIDE);
+        for (int t = 0; t < 4; t++) {
+            for (int j = 0; j < 9; j++) fourTriangles[9 * t + j] = triangle[j] + (j % 3 == t % 3 ? 0.5 * t : 0);
+        }
+        CompiledPrimitives.writeLanes(fourLanes, fourTriangles, new Intersectable[4], 0, 4);
     }
 
     /** The child boxes of the root node, with the kernel this JVM selected (per box tested). */
@@ -87,6 +97,60 @@ public class KernelBenchmark {
             if (WatertightTriangle.intersect(
                     triangle, 0, 3, 6, WatertightTriangle.ALL_EDGES_SHARED, ray, 0, Double.POSITIVE_INFINITY, hit)) {
                 hits++;
+            }
+        }
+        return hits;
+    }
+
+    /** Four triangles one after the other, as a leaf is tested without the filter (per leaf). */
+    @Benchmark
+    @OperationsPerInvocation(RAYS)
+    public int fourTriangleTests() {
+        int hits = 0;
+        for (Ray ray : incoherent) {
+            for (int o = 0; o < 36; o += 9) {
+                if (WatertightTriangle.intersect(
+                        fourTriangles,
+                        o,
+                        o + 3,
+                        o + 6,
+                        WatertightTriangle.ALL_EDGES_SHARED,
+                        ray,
+                        0,
+                        Double.POSITIVE_INFINITY,
+                        hit)) {
+                    hits++;
+                }
+            }
+        }
+        return hits;
+    }
+
+    /**
+     * The same four triangles through the leaf filter, then the watertight test of its candidates in the lanes, as a
+     * filled leaf is tested (per leaf; the scalar test's figure where the JVM has no filter).
+     */
+    @Benchmark
+    @OperationsPerInvocation(RAYS)
+    public int fourTrianglesFiltered() {
+        if (LeafFilter.SELECTED == null) return fourTriangleTests();
+        int hits = 0;
+        for (Ray ray : incoherent) {
+            for (int c = LeafFilter.SELECTED.candidates(fourLanes, 0, 4, ray) & 15; c != 0; c &= c - 1) {
+                int a = Integer.numberOfTrailingZeros(c);
+                if (WatertightTriangle.intersect(
+                        fourLanes,
+                        a,
+                        a + 12,
+                        a + 24,
+                        4,
+                        WatertightTriangle.ALL_EDGES_SHARED,
+                        ray,
+                        0,
+                        Double.POSITIVE_INFINITY,
+                        hit)) {
+                    hits++;
+                }
             }
         }
         return hits;
