@@ -110,7 +110,7 @@ public final class Accelerator implements Intersectable {
 
     /** Whether some leaves are filled and tested by the {@link LeafFilter}: there is a filter and a large mesh. */
     boolean filtersLeaves() {
-        return primitives.leafLanes != null;
+        return primitives.filtersLeaves;
     }
 
     /**

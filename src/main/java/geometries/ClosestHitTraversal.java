@@ -30,8 +30,6 @@ final class ClosestHitTraversal {
     private final BVH bvh;
     /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
-    /** See {@link CompiledPrimitives#leafLanes}: null where leaves are tested one primitive at a time. */
-    private final double[] leafLanes;
 
     private final LeafFilter leafFilter = LeafFilter.SELECTED;
 
@@ -44,7 +42,6 @@ final class ClosestHitTraversal {
         unbounded = primitives.unbounded;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
-        leafLanes = primitives.leafLanes;
     }
 
     /** See {@link Accelerator#intersect}. */
@@ -191,9 +188,9 @@ final class ClosestHitTraversal {
         return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
     }
 
-    /** Whether the leaf of {@code count} at {@code link} is a filled one, with lanes: {@link #filledLeafHit}. */
+    /** Whether the leaf of {@code count} at {@code link} is a filled one, laid out in lanes: {@link #filledLeafHit}. */
     private boolean isFilled(int link, int count) {
-        return count <= LeafFilter.LANES && leafLanes != null && !Double.isNaN(leafLanes[9 * link]);
+        return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**
@@ -204,14 +201,14 @@ final class ClosestHitTraversal {
      */
     private int filledLeafHit(
             int link, int count, Ray ray, double tMin, double tMax, double tieLimit, int best, HitRecord hit) {
-        int candidates = count > 1 ? leafFilter.candidates(leafLanes, 9 * link, count, ray) & ((1 << count) - 1) : 1;
+        int candidates = count > 1 ? leafFilter.candidates(triangles, 9 * link, count, ray) & ((1 << count) - 1) : 1;
         int found = -1;
         for (; candidates != 0; candidates &= candidates - 1) {
             int i = Integer.numberOfTrailingZeros(candidates), k = link + i, a = 9 * link + i;
-            int index = info[INFO * k + INDEX], edges = info[INFO * k + EDGES];
+            int index = info[INFO * k + INDEX], edges = info[INFO * k + EDGES] & WatertightTriangle.ALL_EDGES_SHARED;
             double limit = index < best ? tieLimit : tMax;
             if (WatertightTriangle.intersect(
-                    leafLanes, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, limit, hit)) {
+                    triangles, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, limit, hit)) {
                 tMax = hit.t;
                 tieLimit = Math.nextUp(tMax);
                 best = index;

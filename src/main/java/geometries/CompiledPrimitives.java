@@ -57,13 +57,31 @@ final class CompiledPrimitives {
     final boolean searchesTree;
 
     /**
-     * The coordinates of the triangles of each filled leaf ({@link FilledLeaves}: of at most {@link LeafFilter#LANES}
-     * triangles of large meshes), lane by lane, for {@link LeafFilter}: the leaf at {@code link} with {@code count}
-     * primitives has its i-th one's coordinate j of vertex v at {@code 9 link + count (3 v + j) + i}. Any other leaf of
-     * at most {@link LeafFilter#LANES} has NaN at {@code 9 link}: the traversals test it from {@link #triangles}. The
-     * same space as {@link #triangles} plus a vector's padding. Null without a filter, a tree or a large mesh.
+     * Whether some leaves are filled ({@link FilledLeaves}: at most {@link LeafFilter#LANES} triangles of large meshes)
+     * and laid out lane by lane in {@link #triangles} for the {@link LeafFilter}: the leaf at {@code link} with {@code
+     * count} triangles has its i-th one's coordinate j of vertex v at {@code 9 link + count (3 v + j) + i}, in the
+     * same space as the nine per triangle elsewhere. Their {@link #EDGES} entries say so ({@link #FILLED}).
      */
-    final double[] leafLanes;
+    final boolean filtersLeaves;
+
+    /**
+     * The flag, in a triangle's {@link #EDGES} entry, of a triangle of a filled leaf; above it its lane (2 bits) and its
+     * leaf's count (3 bits), below it the shared-edge flags. So a filled triangle's entry is at least this, another
+     * triangle's at most {@link WatertightTriangle#ALL_EDGES_SHARED}, an object's {@link #OBJECT}.
+     */
+    static final int FILLED = 8;
+
+    private static final int LANE_SHIFT = 4, COUNT_SHIFT = 6;
+
+    /** The lane, in its filled leaf, of the triangle whose {@link #EDGES} entry is {@code edges}. */
+    static int lane(int edges) {
+        return (edges >> LANE_SHIFT) & 3;
+    }
+
+    /** The count of the filled leaf of the triangle whose {@link #EDGES} entry is {@code edges}. */
+    static int leafCount(int edges) {
+        return edges >> COUNT_SHIFT;
+    }
 
     /**
      * Lays out the primitives {@code c} collected in the leaf order of {@code bvh}, or in insertion order when
@@ -73,12 +91,14 @@ final class CompiledPrimitives {
         this(c, bvh, FilledLeaves.NONE);
     }
 
-    /** Lays out as {@link #CompiledPrimitives(PrimitiveCollector, BVH)}, with lanes for the leaves {@code filled} takes. */
+    /** Lays out as {@link #CompiledPrimitives(PrimitiveCollector, BVH)}, in lanes the leaves {@code filled} takes. */
     CompiledPrimitives(PrimitiveCollector c, BVH bvh, FilledLeaves filled) {
         int n = c.count;
         boundedCount = n;
         searchesTree = bvh != null && n > 1;
-        triangles = new double[9 * n];
+        filtersLeaves = searchesTree && filled.size() > 0;
+        // A vector's padding after the last leaf: the filter's loads of four lanes read past a leaf of fewer.
+        triangles = new double[9 * n + (filtersLeaves ? LeafFilter.LANES : 0)];
         info = new int[INFO * n];
         geometries = c.ownerTable();
         objects = new Intersectable[n];
@@ -89,7 +109,7 @@ final class CompiledPrimitives {
         // were collected, so that reading a mesh's vertices and the collector's arrays runs through memory in order
         // and only the writes land where the leaves put them.
         BuildPool.forEach(n, n >= PARALLEL_LAYOUT, i -> layOut(c, i, position == null ? i : position[i]));
-        leafLanes = searchesTree && filled.size() > 0 ? leafLanes(bvh, filled) : null;
+        if (filtersLeaves) fillLeaves(bvh, filled);
         unbounded = c.unbounded.toArray(new Intersectable[0]);
         unboundedMayTransmit = new boolean[unbounded.length];
         unboundedClear = new boolean[unbounded.length];
@@ -135,40 +155,40 @@ final class CompiledPrimitives {
     }
 
     /**
-     * {@link #leafLanes} of the leaves of {@code bvh} that {@code filled} takes, written node by node (on all cores for
-     * large trees); another leaf small enough to be filtered is marked by a NaN first coordinate.
+     * Lays the leaves of {@code bvh} that {@code filled} takes out lane by lane, in place, and flags their triangles;
+     * node by node, on all cores for large trees (each leaf is written by one task).
      */
-    private double[] leafLanes(BVH bvh, FilledLeaves filled) {
-        double[] lanes = new double[triangles.length + LeafFilter.LANES];
+    private void fillLeaves(BVH bvh, FilledLeaves filled) {
         float[] nodes = bvh.nodes;
         int nodeCount = nodes.length / BVH.NODE_STRIDE;
-        if (bvh.rootCount > 0) writeLanes(lanes, bvh, filled, bvh.rootLink, bvh.rootCount);
+        if (bvh.rootCount > 0) fillLeaf(bvh, filled, bvh.rootLink, bvh.rootCount, new double[9 * LeafFilter.LANES]);
         BuildPool.forEachChunk(nodeCount, PARALLEL_LAYOUT / BVH.WIDTH, true, (chunk, from, to) -> {
+            double[] copy = new double[9 * LeafFilter.LANES];
             for (int node = from; node < to; node++) {
+                int o = BVH.NODE_STRIDE * node;
                 for (int c = 0; c < BVH.WIDTH; c++) {
-                    int o = BVH.NODE_STRIDE * node;
                     int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                    if (count > 0)
-                        writeLanes(lanes, bvh, filled, Float.floatToRawIntBits(nodes[o + BVH.LINK + c]), count);
+                    int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
+                    if (count > 0) fillLeaf(bvh, filled, link, count, copy);
                 }
             }
         });
-        return lanes;
     }
 
-    /** Writes the lanes of the leaf of {@code count} primitives at {@code link}, or its mark if it has none. */
-    private void writeLanes(double[] lanes, BVH bvh, FilledLeaves filled, int link, int count) {
-        if (count > LeafFilter.LANES) return;
-        if (filled.fill(bvh.order, link, link + count)) {
-            writeLanes(lanes, triangles, objects, link, count);
-        } else {
-            lanes[9 * link] = Double.NaN;
+    /** Lays out the leaf of {@code count} at {@code link} lane by lane if {@code filled} takes it ({@code copy}: room). */
+    private void fillLeaf(BVH bvh, FilledLeaves filled, int link, int count, double[] copy) {
+        if (count > LeafFilter.LANES || !filled.fill(bvh.order, link, link + count)) return;
+        System.arraycopy(triangles, 9 * link, copy, 0, 9 * count);
+        for (int i = 0; i < count; i++) {
+            for (int j = 0; j < 9; j++) triangles[9 * link + count * j + i] = copy[9 * i + j];
+            info[INFO * (link + i) + EDGES] |= FILLED | i << LANE_SHIFT | count << COUNT_SHIFT;
         }
     }
 
     /**
      * Writes the lanes of the leaf of {@code count} primitives at {@code link} from the triangles' coordinates in
-     * {@code triangles} (nine per primitive in leaf order), NaN for the primitives that {@code objects} holds.
+     * {@code triangles} (nine per primitive in leaf order), NaN for the primitives that {@code objects} holds: the
+     * layout of a filled leaf, in another array (for tests of the filter).
      */
     static void writeLanes(double[] lanes, double[] triangles, Intersectable[] objects, int link, int count) {
         for (int i = 0; i < count; i++) {
@@ -182,7 +202,6 @@ final class CompiledPrimitives {
     /** Bytes of the flat arrays of the bounded primitives. */
     long bytes() {
         return 8L * triangles.length
-                + (leafLanes == null ? 0 : 8L * leafLanes.length)
                 + 4L * info.length
                 + 8L * (geometries.length + objects.length)
                 + 2L * mayTransmit.length;

@@ -5,7 +5,7 @@ import primitives.Ray;
 /**
  * The first step of the watertight triangle test for the triangles of a BVH leaf at once: which of them the ray
  * does not pass outside of. A leaf of up to {@link #LANES} primitives is tested in one call from the leaf's lanes
- * ({@link CompiledPrimitives#leafLanes}), and only the candidates it returns go through
+ * ({@link CompiledPrimitives#filtersLeaves}), and only the candidates it returns go through
  * {@link WatertightTriangle#intersect}, in order, which decides them as before. Each lane computes the scalar test's
  * edge functions with the same IEEE operations in the same order, so a triangle is a candidate exactly when the
  * scalar test passes its edge and determinant checks: the filter never drops a hit, and the answers stay bit for bit

@@ -39,8 +39,6 @@ final class ShadowQueries {
     private final boolean searchesTree;
     /** See {@link Accelerator#testsShadowPackets}. */
     final boolean testsPackets;
-    /** See {@link CompiledPrimitives#leafLanes}: null where leaves are tested one primitive at a time. */
-    private final double[] leafLanes;
 
     private final LeafFilter leafFilter = LeafFilter.SELECTED;
 
@@ -57,7 +55,6 @@ final class ShadowQueries {
         unboundedClear = primitives.unboundedClear;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
-        leafLanes = primitives.leafLanes;
         boolean objectsOnly = true;
         // Up to the first triangle (a mesh's is the first primitive: no pass over a million records).
         for (int k = 0; k < boundedCount && objectsOnly; k++) objectsOnly = info[INFO * k + EDGES] == OBJECT;
@@ -249,9 +246,9 @@ final class ShadowQueries {
         }
     }
 
-    /** Whether the leaf of {@code count} at {@code link} is a filled one, with lanes: {@link #filledLeafBlocks}. */
+    /** Whether the leaf of {@code count} at {@code link} is a filled one, laid out in lanes: {@link #filledLeafBlocks}. */
     private boolean isFilled(int link, int count) {
-        return count <= LeafFilter.LANES && leafLanes != null && !Double.isNaN(leafLanes[9 * link]);
+        return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**
@@ -264,16 +261,16 @@ final class ShadowQueries {
      */
     private boolean filledLeafBlocks(
             int link, int count, boolean honourTransparency, Ray ray, double tMin, double tMax, HitRecord scratch) {
-        int candidates = count > 1 ? leafFilter.candidates(leafLanes, 9 * link, count, ray) : 1;
+        int candidates = count > 1 ? leafFilter.candidates(triangles, 9 * link, count, ray) : 1;
         long tests = 0;
         try {
             for (int k = link, end = link + count; k < end; k++) {
                 if (honourTransparency && clear[k] || leftBy(k, scratch)) continue;
                 tests++;
                 if ((candidates >> (k - link) & 1) == 0) continue;
-                int a = 9 * link + (k - link), edges = info[INFO * k + EDGES];
+                int a = 9 * link + (k - link), edges = info[INFO * k + EDGES] & WatertightTriangle.ALL_EDGES_SHARED;
                 if (WatertightTriangle.intersect(
-                                leafLanes, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, tMax, scratch)
+                                triangles, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, tMax, scratch)
                         && triangleBlocks(k, honourTransparency && mayTransmit[k], scratch)) {
                     if (!mayTransmit[k]) scratch.occluder = k;
                     return true;
@@ -306,9 +303,31 @@ final class ShadowQueries {
         int hint = scratch.occluderHint;
         if (hint < 0 || hint >= boundedCount || mayTransmit[hint] || leftBy(hint, scratch)) return false;
         scratch.primitiveTests++;
-        if (!blocks(hint, false, ray, tMin, tMax, scratch)) return false;
+        int edges = info[INFO * hint + EDGES];
+        if (edges >= CompiledPrimitives.FILLED
+                ? !filledTriangleHits(hint, edges, ray, tMin, tMax, scratch)
+                : !blocks(hint, false, ray, tMin, tMax, scratch)) {
+            return false;
+        }
         scratch.occluder = hint;
         return true;
+    }
+
+    /** Whether the segment hits triangle {@code k} of a filled leaf, whose {@link CompiledPrimitives#EDGES} entry is {@code edges}. */
+    private boolean filledTriangleHits(int k, int edges, Ray ray, double tMin, double tMax, HitRecord scratch) {
+        int lane = CompiledPrimitives.lane(edges), count = CompiledPrimitives.leafCount(edges);
+        int a = 9 * (k - lane) + lane;
+        return WatertightTriangle.intersect(
+                triangles,
+                a,
+                a + 3 * count,
+                a + 6 * count,
+                count,
+                edges & WatertightTriangle.ALL_EDGES_SHARED,
+                ray,
+                tMin,
+                tMax,
+                scratch);
     }
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */

@@ -63,7 +63,7 @@ public final class WatertightTriangle {
     /**
      * {@link #intersect(double[], int, int, int, int, Ray, double, double, HitRecord)} for vertices whose coordinates
      * lie {@code stride} apart in {@code v} (x at {@code v[a]}, y at {@code v[a + stride]}, z at
-     * {@code v[a + 2 stride]}): the lanes of a BVH leaf ({@link CompiledPrimitives#leafLanes}) hold a triangle so.
+     * {@code v[a + 2 stride]}): the lanes of a BVH leaf ({@link CompiledPrimitives#filtersLeaves}) hold a triangle so.
      */
     static boolean intersect(
             double[] v,
