@@ -109,18 +109,7 @@ public class KernelBenchmark {
         int hits = 0;
         for (Ray ray : incoherent) {
             for (int o = 0; o < 36; o += 9) {
-                if (WatertightTriangle.intersect(
-                        fourTriangles,
-                        o,
-                        o + 3,
-                        o + 6,
-                        WatertightTriangle.ALL_EDGES_SHARED,
-                        ray,
-                        0,
-                        Double.POSITIVE_INFINITY,
-                        hit)) {
-                    hits++;
-                }
+                if (hits(fourTriangles, o, 1, ray)) hits++;
             }
         }
         return hits;
@@ -137,23 +126,25 @@ public class KernelBenchmark {
         int hits = 0;
         for (Ray ray : incoherent) {
             for (int c = LeafFilter.SELECTED.candidates(fourLanes, 0, 4, ray) & 15; c != 0; c &= c - 1) {
-                int a = Integer.numberOfTrailingZeros(c);
-                if (WatertightTriangle.intersect(
-                        fourLanes,
-                        a,
-                        a + 12,
-                        a + 24,
-                        4,
-                        WatertightTriangle.ALL_EDGES_SHARED,
-                        ray,
-                        0,
-                        Double.POSITIVE_INFINITY,
-                        hit)) {
-                    hits++;
-                }
+                if (hits(fourLanes, Integer.numberOfTrailingZeros(c), 4, ray)) hits++;
             }
         }
         return hits;
+    }
+
+    /** The watertight test of the triangle at {@code v[a]}, its coordinates {@code stride} apart. */
+    private boolean hits(double[] v, int a, int stride, Ray ray) {
+        return WatertightTriangle.intersect(
+                v,
+                a,
+                a + 3 * stride,
+                a + 6 * stride,
+                stride,
+                WatertightTriangle.ALL_EDGES_SHARED,
+                ray,
+                0,
+                Double.POSITIVE_INFINITY,
+                hit);
     }
 
     @Benchmark
