@@ -3,9 +3,12 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import geometries.Instance;
 import geometries.Mesh;
+import geometries.Meshes;
 import geometries.Plane;
 import geometries.Polygon;
+import geometries.Prototype;
 import geometries.Sphere;
 import java.lang.management.ManagementFactory;
 import lighting.AmbientLight;
@@ -18,6 +21,7 @@ import primitives.Color;
 import primitives.Material;
 import primitives.Point;
 import primitives.Texture;
+import primitives.Transform;
 import primitives.Vector;
 import renderer.sampling.SamplingConfig;
 import renderer.sampling.SamplingPattern;
@@ -93,6 +97,12 @@ class TracerAllocationTest {
                                 .setKd(0.8)
                                 .setKdMap(new Texture(
                                         2, 2, new float[] {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, Texture.Wrap.MIRROR))));
+        // A mesh large enough for the leaf filter (LeafFilter.MIN_MESH), placed by an instance: the filled leaves'
+        // kernel must not box its vectors (on JDK 17 a call it cannot inline would).
+        Mesh ball = Meshes.icosphere(3);
+        ball.setMaterial(new Material().setKd(0.5).setKs(0.2).setShininess(20));
+        scene.geometries.add(
+                new Instance(new Prototype(ball), Transform.scale(8).then(Transform.translate(35, -10, 8))));
         scene.lights.add(new PointLight(new Color(400, 380, 350), new Point(30, -40, 70))
                 .setKq(0.0001)
                 .setRadius(5)
