@@ -90,7 +90,7 @@ final class ClosestHitTraversal {
             // No test of the root's own box: visiting the root tests its children's boxes, which lie inside it.
             boolean more = true;
             while (more) {
-                if (count > 0 && isFilled(link, count)) {
+                if (count > 0 && isFilled(link)) {
                     tests += count;
                     int k = filledLeafHit(link, count, ray, tMin, tMax, tieLimit, best, hit);
                     if (k >= 0) {
@@ -188,14 +188,14 @@ final class ClosestHitTraversal {
         return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
     }
 
-    /** Whether the leaf of {@code count} at {@code link} is a filled one, laid out in lanes: {@link #filledLeafHit}. */
-    private boolean isFilled(int link, int count) {
+    /** Whether the leaf at {@code link} is a filled one, laid out in lanes: {@link #filledLeafHit}. */
+    private boolean isFilled(int link) {
         return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**
-     * Tests the filled leaf of {@code count} at {@code link} (triangles of a large mesh only) as the search's loop tests
-     * a leaf, and returns the position of the triangle it ends on, whose hit is in the record, or -1 if none is
+     * Tests the filled leaf of {@code count} at {@code link} (triangles of a large mesh only) as the search's loop
+     * tests a leaf, and returns the position of the triangle it ends on, whose hit is in the record, or -1 if none is
      * closer. Only the filter's candidates are tested (in the leaf's lanes, in leaf order); the rest would be missed by
      * their own test. Its own method, called from the loop: the loop stays as small as it was for other leaves.
      */

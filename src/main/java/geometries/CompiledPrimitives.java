@@ -65,8 +65,8 @@ final class CompiledPrimitives {
     final boolean filtersLeaves;
 
     /**
-     * The flag, in a triangle's {@link #EDGES} entry, of a triangle of a filled leaf; above it its lane (2 bits) and its
-     * leaf's count (3 bits), below it the shared-edge flags. So a filled triangle's entry is at least this, another
+     * The flag, in a triangle's {@link #EDGES} entry, of a triangle of a filled leaf; above it its lane (2 bits) and
+     * its leaf's count (3 bits), below it the shared-edge flags. So a filled triangle's entry is at least this, another
      * triangle's at most {@link WatertightTriangle#ALL_EDGES_SHARED}, an object's {@link #OBJECT}.
      */
     static final int FILLED = 8;
@@ -175,7 +175,9 @@ final class CompiledPrimitives {
         });
     }
 
-    /** Lays out the leaf of {@code count} at {@code link} lane by lane if {@code filled} takes it ({@code copy}: room). */
+    /**
+     * Lays out the leaf of {@code count} at {@code link} lane by lane if {@code filled} takes it ({@code copy}: room).
+     */
     private void fillLeaf(BVH bvh, FilledLeaves filled, int link, int count, double[] copy) {
         if (count > LeafFilter.LANES || !filled.fill(bvh.order, link, link + count)) return;
         System.arraycopy(triangles, 9 * link, copy, 0, 9 * count);

@@ -21,8 +21,8 @@ abstract class LeafFilter {
     /**
      * Triangles a mesh must have for its leaves to be filled and filtered. A tessellated surface sends a ray through
      * many small leaves, each test an unpredictable branch, and there the filter paid (icospheres of 1,280 and 82k
-     * triangles, heightfields of 2,178 to 1M: 1.03-1.34x); the street's meshes, boxes and panels of at most 672
-     * large triangles among spheres and polygons, measured 0.85-0.92x filled and filtered (its rays are coherent,
+     * triangles, heightfields of 2,178 to 1M: 1.07-1.36x); the street's meshes, boxes and panels of at most 672
+     * large triangles among spheres and polygons, measured 0.85-0.93x filled and filtered (its rays are coherent,
      * and a split culls what a filled leaf tests).
      */
     static final int MIN_MESH = 1024;

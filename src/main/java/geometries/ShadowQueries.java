@@ -129,7 +129,7 @@ final class ShadowQueries {
                     int c = Integer.numberOfTrailingZeros(mask);
                     int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
                     int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                    if (isFilled(link, count)) {
+                    if (isFilled(link)) {
                         if (filledLeafBlocks(link, count, true, ray, tMin, tMax, scratch)) return true;
                         continue;
                     }
@@ -200,7 +200,7 @@ final class ShadowQueries {
             boolean more = true; // no test of the root's own box, as in the closest-hit traversal
             try {
                 while (more) {
-                    if (count > 0 && isFilled(link, count)) {
+                    if (count > 0 && isFilled(link)) {
                         if (filledLeafBlocks(link, count, honourTransparency, ray, tMin, tMax, scratch)) return true;
                     } else if (count > 0) {
                         for (int k = link, end = link + count; k < end; k++) {
@@ -246,18 +246,18 @@ final class ShadowQueries {
         }
     }
 
-    /** Whether the leaf of {@code count} at {@code link} is a filled one, laid out in lanes: {@link #filledLeafBlocks}. */
-    private boolean isFilled(int link, int count) {
+    /** Whether the leaf at {@code link} is a filled one, laid out in lanes: {@link #filledLeafBlocks}. */
+    private boolean isFilled(int link) {
         return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**
-     * Whether a triangle of the filled leaf of {@code count} at {@code link} (triangles of a large mesh only) blocks the
-     * segment (then {@code scratch.occluder} names it if opaque); with {@code honourTransparency}, clear ones are
+     * Whether a triangle of the filled leaf of {@code count} at {@code link} (triangles of a large mesh only) blocks
+     * the segment (then {@code scratch.occluder} names it if opaque); with {@code honourTransparency}, clear ones are
      * skipped and transparent ones collected. Adds its tests to the record. The filter's candidates are tested in the
      * leaf's lanes, the rest would be missed by their own test: skipping them changes nothing but the time. Its own
-     * method, called from the traversal loops: written there, it made them too big for the JIT to inline a sphere's or a
-     * plane's test in them (the street's shadow rays 0.93x).
+     * method, called from the traversal loops: written there, it made them too big for the JIT to inline a sphere's or
+     * a plane's test in them (the street's shadow rays 0.93x).
      */
     private boolean filledLeafBlocks(
             int link, int count, boolean honourTransparency, Ray ray, double tMin, double tMax, HitRecord scratch) {
@@ -313,7 +313,10 @@ final class ShadowQueries {
         return true;
     }
 
-    /** Whether the segment hits triangle {@code k} of a filled leaf, whose {@link CompiledPrimitives#EDGES} entry is {@code edges}. */
+    /**
+     * Whether the segment hits triangle {@code k} of a filled leaf, whose {@link CompiledPrimitives#EDGES} entry is
+     * {@code edges} (its lane and its leaf's count say where its coordinates are).
+     */
     private boolean filledTriangleHits(int k, int edges, Ray ray, double tMin, double tMax, HitRecord scratch) {
         int lane = CompiledPrimitives.lane(edges), count = CompiledPrimitives.leafCount(edges);
         int a = 9 * (k - lane) + lane;

@@ -36,8 +36,8 @@ class LeafFilterTest {
     }
 
     /**
-     * Leaves are filled and filtered for the triangles of meshes of at least {@link LeafFilter#MIN_MESH} triangles only:
-     * an icosphere of 1,280, alone or among spheres, but not one of 320, nor a scene of spheres.
+     * Leaves are filled and filtered for the triangles of meshes of at least {@link LeafFilter#MIN_MESH} triangles
+     * only: an icosphere of 1,280, alone or among spheres, but not one of 320, nor a scene of spheres.
      */
     @Test
     void onlyLargeMeshesAreFiltered() throws ReflectiveOperationException {
