@@ -61,7 +61,7 @@ public class KernelBenchmark {
         for (int t = 0; t < 4; t++) {
             for (int j = 0; j < 9; j++) fourTriangles[9 * t + j] = triangle[j] + (j % 3 == t % 3 ? 0.5 * t : 0);
         }
-        CompiledPrimitives.writeLanes(fourLanes, fourTriangles, new Intersectable[4], 0, 4);
+        CompiledPrimitives.toLanes(fourTriangles, 0, fourLanes, 0, 4);
     }
 
     /** The child boxes of the root node, with the kernel this JVM selected (per box tested). */

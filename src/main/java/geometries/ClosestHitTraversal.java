@@ -90,7 +90,7 @@ final class ClosestHitTraversal {
             // No test of the root's own box: visiting the root tests its children's boxes, which lie inside it.
             boolean more = true;
             while (more) {
-                if (count > 0 && isFilled(link)) {
+                if (count > 0 && CompiledPrimitives.isFilled(info[INFO * link + EDGES])) {
                     tests += count;
                     int k = filledLeafHit(link, count, ray, tMin, tMax, tieLimit, best, hit);
                     if (k >= 0) {
@@ -186,11 +186,6 @@ final class ClosestHitTraversal {
         if (edges == OBJECT) return objects[k].intersect(ray, tMin, tMax, hit);
         int o = 9 * k;
         return WatertightTriangle.intersect(triangles, o, o + 3, o + 6, edges, ray, tMin, tMax, hit);
-    }
-
-    /** Whether the leaf at {@code link} is a filled one, laid out in lanes: {@link #filledLeafHit}. */
-    private boolean isFilled(int link) {
-        return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**

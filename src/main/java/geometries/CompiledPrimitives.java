@@ -73,6 +73,11 @@ final class CompiledPrimitives {
 
     private static final int LANE_SHIFT = 4, COUNT_SHIFT = 6;
 
+    /** Whether {@code edges}, a primitive's {@link #EDGES} entry, is a filled leaf's triangle's. */
+    static boolean isFilled(int edges) {
+        return edges >= FILLED;
+    }
+
     /** The lane, in its filled leaf, of the triangle whose {@link #EDGES} entry is {@code edges}. */
     static int lane(int edges) {
         return (edges >> LANE_SHIFT) & 3;
@@ -181,23 +186,18 @@ final class CompiledPrimitives {
     private void fillLeaf(BVH bvh, FilledLeaves filled, int link, int count, double[] copy) {
         if (count > LeafFilter.LANES || !filled.fill(bvh.order, link, link + count)) return;
         System.arraycopy(triangles, 9 * link, copy, 0, 9 * count);
-        for (int i = 0; i < count; i++) {
-            for (int j = 0; j < 9; j++) triangles[9 * link + count * j + i] = copy[9 * i + j];
+        toLanes(copy, 0, triangles, 9 * link, count);
+        for (int i = 0; i < count; i++)
             info[INFO * (link + i) + EDGES] |= FILLED | i << LANE_SHIFT | count << COUNT_SHIFT;
-        }
     }
 
     /**
-     * Writes the lanes of the leaf of {@code count} primitives at {@code link} from the triangles' coordinates in
-     * {@code triangles} (nine per primitive in leaf order), NaN for the primitives that {@code objects} holds: the
-     * layout of a filled leaf, in another array (for tests of the filter).
+     * Writes {@code count} triangles, nine coordinates each from {@code source[from]} on, lane by lane to {@code
+     * lanes[at]} on: coordinate j of the i-th at {@code at + count j + i}, the layout of a filled leaf.
      */
-    static void writeLanes(double[] lanes, double[] triangles, Intersectable[] objects, int link, int count) {
+    static void toLanes(double[] source, int from, double[] lanes, int at, int count) {
         for (int i = 0; i < count; i++) {
-            int k = link + i;
-            for (int j = 0; j < 9; j++) {
-                lanes[9 * link + count * j + i] = objects[k] == null ? triangles[9 * k + j] : Double.NaN;
-            }
+            for (int j = 0; j < 9; j++) lanes[at + count * j + i] = source[from + 9 * i + j];
         }
     }
 

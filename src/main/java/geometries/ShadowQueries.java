@@ -129,7 +129,7 @@ final class ShadowQueries {
                     int c = Integer.numberOfTrailingZeros(mask);
                     int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);
                     int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
-                    if (isFilled(link)) {
+                    if (CompiledPrimitives.isFilled(info[INFO * link + EDGES])) {
                         if (filledLeafBlocks(link, count, true, ray, tMin, tMax, scratch)) return true;
                         continue;
                     }
@@ -200,7 +200,7 @@ final class ShadowQueries {
             boolean more = true; // no test of the root's own box, as in the closest-hit traversal
             try {
                 while (more) {
-                    if (count > 0 && isFilled(link)) {
+                    if (count > 0 && CompiledPrimitives.isFilled(info[INFO * link + EDGES])) {
                         if (filledLeafBlocks(link, count, honourTransparency, ray, tMin, tMax, scratch)) return true;
                     } else if (count > 0) {
                         for (int k = link, end = link + count; k < end; k++) {
@@ -244,11 +244,6 @@ final class ShadowQueries {
         } finally {
             scratch.primitiveTests += tests;
         }
-    }
-
-    /** Whether the leaf at {@code link} is a filled one, laid out in lanes: {@link #filledLeafBlocks}. */
-    private boolean isFilled(int link) {
-        return info[INFO * link + EDGES] >= CompiledPrimitives.FILLED;
     }
 
     /**
@@ -304,7 +299,7 @@ final class ShadowQueries {
         if (hint < 0 || hint >= boundedCount || mayTransmit[hint] || leftBy(hint, scratch)) return false;
         scratch.primitiveTests++;
         int edges = info[INFO * hint + EDGES];
-        if (edges >= CompiledPrimitives.FILLED
+        if (CompiledPrimitives.isFilled(edges)
                 ? !filledTriangleHits(hint, edges, ray, tMin, tMax, scratch)
                 : !blocks(hint, false, ray, tMin, tMax, scratch)) {
             return false;

@@ -73,13 +73,15 @@ class LeafFilterTest {
             Ray ray = randomRay(random);
             for (int k = 0; k < n; k++) {
                 if (random.nextInt(12) == 0) {
+                    // Another shape: NaN coordinates, which the filter must pass on.
                     objects[k] = new Sphere(new Point(0, 0, 0), 1);
+                    java.util.Arrays.fill(triangles, 9 * k, 9 * k + 9, Double.NaN);
                 } else {
                     randomTriangle(triangles, 9 * k, ray, random);
                 }
             }
             double[] lanes = new double[triangles.length + LeafFilter.LANES];
-            CompiledPrimitives.writeLanes(lanes, triangles, objects, link, count);
+            CompiledPrimitives.toLanes(triangles, 9 * link, lanes, 9 * link, count);
             int mask = LeafFilter.SELECTED.candidates(lanes, 9 * link, count, ray);
             for (int i = 0; i < count; i++) {
                 int k = link + i;
