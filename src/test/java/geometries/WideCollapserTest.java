@@ -1,0 +1,142 @@
+package geometries;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.SplittableRandom;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The collapse of a binary tree into wide nodes: below {@link WideCollapser#GREEDY_ABOVE} leaves it is the one of
+ * least total wide-node area, checked against every collapse of small trees and against the greedy collapse of larger
+ * ones.
+ */
+class WideCollapserTest {
+
+    /** Seeded binary trees of 9 to 16 leaves (one box per leaf), small enough to try every collapse. */
+    static Stream<Arguments> smallTrees() {
+        return IntStream.range(0, 24).mapToObj(i -> Arguments.of(0x5EEDL + 31L * i, 9 + i % 8));
+    }
+
+    @ParameterizedTest(name = "seed {0}, {1} leaves")
+    @MethodSource("smallTrees")
+    void theCollapseHasTheLeastAreaOfAllCollapses(long seed, int n) {
+        BvhBuilder b = builder(randomBoxes(seed, n), 1);
+        WideCollapser c = new WideCollapser(b, false);
+        double collapsed = wideNodeArea(b, c, 0);
+        double least = leastAreaOfAllCollapses(b);
+        assertEquals(least, collapsed, 1e-5 * least, "seed " + seed);
+    }
+
+    /** Seeded scenes of up to 512 leaves, optimal throughout, and of more, where the top is greedy. */
+    static Stream<Arguments> largerTrees() {
+        return IntStream.range(0, 12).mapToObj(i -> Arguments.of(0xC011L + 7L * i, 100 + 350 * i));
+    }
+
+    @ParameterizedTest(name = "seed {0}, {1} boxes")
+    @MethodSource("largerTrees")
+    void theCollapseHasNoMoreAreaThanTheGreedyOne(long seed, int n) {
+        BvhBuilder b = builder(randomBoxes(seed, n), 4);
+        double optimal = wideNodeArea(b, new WideCollapser(b, false), 0);
+        double greedy = wideNodeArea(b, new WideCollapser(b, false, 0), 0);
+        assertTrue(optimal <= greedy * (1 + 1e-6), optimal + " > greedy " + greedy + " (seed " + seed + ")");
+    }
+
+    /** Near the leaves the greedy collapse leaves nodes part empty; the optimal one needs fewer wide nodes here. */
+    @Test
+    void aMeshNeedsFewerWideNodesThanGreedily() {
+        Mesh mesh = Meshes.icosphere(4); // 5,120 triangles
+        double[] v = mesh.getVertices();
+        int[] t = mesh.getIndices();
+        double[] boxes = new double[6 * mesh.triangleCount()];
+        for (int p = 0; p < mesh.triangleCount(); p++) {
+            for (int a = 0; a < 3; a++) {
+                double x0 = v[3 * t[3 * p] + a], x1 = v[3 * t[3 * p + 1] + a], x2 = v[3 * t[3 * p + 2] + a];
+                boxes[6 * p + a] = Math.min(x0, Math.min(x1, x2));
+                boxes[6 * p + 3 + a] = Math.max(x0, Math.max(x1, x2));
+            }
+        }
+        BvhBuilder b = builder(boxes, 4);
+        int optimal = new WideCollapser(b, false).countWideNodes(0);
+        int greedy = new WideCollapser(b, false, 0).countWideNodes(0);
+        assertTrue(optimal < greedy, optimal + " wide nodes, greedily " + greedy);
+    }
+
+    private static double[] randomBoxes(long seed, int n) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double[] boxes = new double[6 * n];
+        for (int p = 0; p < n; p++) {
+            for (int a = 0; a < 3; a++) {
+                double lo = random.nextDouble() * 100;
+                boxes[6 * p + a] = lo;
+                boxes[6 * p + 3 + a] = lo + random.nextDouble() * (random.nextInt(8) == 0 ? 40 : 4);
+            }
+        }
+        return boxes;
+    }
+
+    private static BvhBuilder builder(double[] boxes, int maxLeafSize) {
+        return new BvhBuilder(BVH.roundedOutward(boxes), 16, maxLeafSize, FilledLeaves.NONE, false, null);
+    }
+
+    private static boolean isLeaf(BvhBuilder b, int node) {
+        return b.data[2 * node + 1] > 0;
+    }
+
+    private static double area(BvhBuilder b, int node) {
+        int o = 6 * node;
+        float[] f = b.bounds;
+        return SahSplitter.surfaceArea(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5]);
+    }
+
+    /** The total area of the binary nodes that become wide nodes, from {@code binary} down, as {@code c} opens them. */
+    private static double wideNodeArea(BvhBuilder b, WideCollapser c, int binary) {
+        int[] children = new int[BVH.WIDTH];
+        int n = c.open(binary, children);
+        double sum = area(b, binary);
+        for (int i = 0; i < n; i++) {
+            if (!isLeaf(b, children[i])) sum += wideNodeArea(b, c, children[i]);
+        }
+        return sum;
+    }
+
+    /**
+     * The oracle: every set of interior nodes that holds the root and gives no wide node more than eight children
+     * (each wide node's children are the first leaves or set members below it), and the least total area of them.
+     */
+    private static double leastAreaOfAllCollapses(BvhBuilder b) {
+        int[] interior =
+                IntStream.range(1, b.nodeCount).filter(i -> !isLeaf(b, i)).toArray();
+        double least = Double.POSITIVE_INFINITY;
+        boolean[] wide = new boolean[b.nodeCount];
+        for (long set = 0; set < 1L << interior.length; set++) {
+            java.util.Arrays.fill(wide, false);
+            wide[0] = true;
+            double sum = area(b, 0);
+            for (int k = 0; k < interior.length; k++) {
+                if ((set >> k & 1) != 0) {
+                    wide[interior[k]] = true;
+                    sum += area(b, interior[k]);
+                }
+            }
+            if (sum >= least) continue;
+            boolean fits = true;
+            for (int i = 0; i < b.nodeCount && fits; i++) {
+                if (wide[i]) fits = slots(b, wide, i + 1) + slots(b, wide, b.data[2 * i]) <= BVH.WIDTH;
+            }
+            if (fits) least = sum;
+        }
+        return least;
+    }
+
+    /** The slots that binary node {@code node} takes in its wide parent: one if a leaf or wide, else its children's. */
+    private static int slots(BvhBuilder b, boolean[] wide, int node) {
+        if (isLeaf(b, node) || wide[node]) return 1;
+        return slots(b, wide, node + 1) + slots(b, wide, b.data[2 * node]);
+    }
+}
