@@ -74,7 +74,7 @@ final class WideCollapser {
         ownSplit = new byte[n];
         int[] optimal = new int[leaves[0]];
         int roots = optimalRoots(0, optimal, 0);
-        // One scratch array per chunk of subtrees: allocated per subtree, a 1M-triangle tree's plan zeroed 30-60 MB.
+        // One scratch array per chunk of subtrees, not per subtree: a million-triangle tree has a thousand or more.
         BuildPool.forEachChunk(roots, PLAN_CHUNK, parallel, (chunk, from, to) -> {
             float[] cost = new float[WIDTH * (2 * greedyAbove - 1)];
             for (int r = from; r < to; r++) planSubtree(optimal[r], cost);
