@@ -22,11 +22,11 @@ import java.util.List;
  * <p>Build ({@link BvhBuilder}, each node decided by {@link SahSplitter}): at each binary node the centroids are binned
  * along the axis of largest centroid extent; the split between bins that minimises {@code 1 + (nL aL + nR aR) / a} is
  * taken unless a leaf (cost {@code n}) is cheaper and small enough. Nodes whose centroids coincide are halved by count
- * so leaves stay bounded. The binary tree is then collapsed ({@link WideCollapser}): optimally (least total area of wide
- * nodes) in subtrees of up to 512 leaves, greedily above (a wide node starts from a binary node's two children and
- * repeatedly replaces the interior child with the most work below it, surface area times primitives, by its two
- * children until it has eight). A build may give a group of primitives (Accelerator's
- * clear surfaces) a subtree of its own under the root, which {@link #secondGroupSlots} names. The traversals live
+ * so leaves stay bounded. The binary tree is then collapsed ({@link WideCollapser}): optimally (least total area of
+ * wide nodes) in subtrees of up to 512 leaves, greedily above (a wide node starts from a binary node's two children
+ * and repeatedly replaces the interior child with the most work below it, surface area times primitives, by its two
+ * children until it has eight). A build may give a group of primitives (Accelerator's clear surfaces) a subtree of
+ * its own under the root, which {@link #secondGroupSlots} names. The traversals live
  * beside the primitive data they test, in the package-private ClosestHitTraversal and ShadowQueries of
  * {@link Accelerator}.
  */

@@ -199,11 +199,10 @@ final class ClosestHitTraversal {
         int candidates = count > 1 ? leafFilter.candidates(triangles, 9 * link, count, ray) & ((1 << count) - 1) : 1;
         int found = -1;
         for (; candidates != 0; candidates &= candidates - 1) {
-            int i = Integer.numberOfTrailingZeros(candidates), k = link + i, a = 9 * link + i;
-            int index = info[INFO * k + INDEX], edges = info[INFO * k + EDGES] & WatertightTriangle.ALL_EDGES_SHARED;
+            int i = Integer.numberOfTrailingZeros(candidates), k = link + i, index = info[INFO * k + INDEX];
             double limit = index < best ? tieLimit : tMax;
-            if (WatertightTriangle.intersect(
-                    triangles, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, limit, hit)) {
+            if (CompiledPrimitives.intersectFilled(
+                    triangles, link, i, count, info[INFO * k + EDGES], ray, tMin, limit, hit)) {
                 tMax = hit.t;
                 tieLimit = Math.nextUp(tMax);
                 best = index;

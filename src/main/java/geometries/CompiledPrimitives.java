@@ -1,6 +1,7 @@
 package geometries;
 
 import primitives.Double3;
+import primitives.Ray;
 
 /**
  * The primitives of an {@link Accelerator} laid out flat in BVH leaf order (insertion order without a BVH), as the
@@ -189,6 +190,34 @@ final class CompiledPrimitives {
         toLanes(copy, 0, triangles, 9 * link, count);
         for (int i = 0; i < count; i++)
             info[INFO * (link + i) + EDGES] |= FILLED | i << LANE_SHIFT | count << COUNT_SHIFT;
+    }
+
+    /**
+     * {@link WatertightTriangle#intersect} for triangle {@code lane} of the filled leaf of {@code count} at {@code
+     * link}, whose {@link #EDGES} entry is {@code edges} (its flags above the shared edges are masked off here).
+     */
+    static boolean intersectFilled(
+            double[] triangles,
+            int link,
+            int lane,
+            int count,
+            int edges,
+            Ray ray,
+            double tMin,
+            double tMax,
+            HitRecord hit) {
+        int a = 9 * link + lane;
+        return WatertightTriangle.intersect(
+                triangles,
+                a,
+                a + 3 * count,
+                a + 6 * count,
+                count,
+                edges & WatertightTriangle.ALL_EDGES_SHARED,
+                ray,
+                tMin,
+                tMax,
+                hit);
     }
 
     /**

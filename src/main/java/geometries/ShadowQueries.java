@@ -263,9 +263,8 @@ final class ShadowQueries {
                 if (honourTransparency && clear[k] || leftBy(k, scratch)) continue;
                 tests++;
                 if ((candidates >> (k - link) & 1) == 0) continue;
-                int a = 9 * link + (k - link), edges = info[INFO * k + EDGES] & WatertightTriangle.ALL_EDGES_SHARED;
-                if (WatertightTriangle.intersect(
-                                triangles, a, a + 3 * count, a + 6 * count, count, edges, ray, tMin, tMax, scratch)
+                if (CompiledPrimitives.intersectFilled(
+                                triangles, link, k - link, count, info[INFO * k + EDGES], ray, tMin, tMax, scratch)
                         && triangleBlocks(k, honourTransparency && mayTransmit[k], scratch)) {
                     if (!mayTransmit[k]) scratch.occluder = k;
                     return true;
@@ -313,19 +312,9 @@ final class ShadowQueries {
      * {@code edges} (its lane and its leaf's count say where its coordinates are).
      */
     private boolean filledTriangleHits(int k, int edges, Ray ray, double tMin, double tMax, HitRecord scratch) {
-        int lane = CompiledPrimitives.lane(edges), count = CompiledPrimitives.leafCount(edges);
-        int a = 9 * (k - lane) + lane;
-        return WatertightTriangle.intersect(
-                triangles,
-                a,
-                a + 3 * count,
-                a + 6 * count,
-                count,
-                edges & WatertightTriangle.ALL_EDGES_SHARED,
-                ray,
-                tMin,
-                tMax,
-                scratch);
+        int lane = CompiledPrimitives.lane(edges);
+        return CompiledPrimitives.intersectFilled(
+                triangles, k - lane, lane, CompiledPrimitives.leafCount(edges), edges, ray, tMin, tMax, scratch);
     }
 
     /** Whether bounded primitive {@code k} blocks the segment; a transparent one is collected instead. */

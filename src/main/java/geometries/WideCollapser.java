@@ -45,9 +45,9 @@ final class WideCollapser {
     /** Leaves below each binary node. */
     private final int[] leaves;
     /**
-     * The optimal collapse's choices, for binary interior node i of at most {@link #GREEDY_ABOVE} leaves taking at most
-     * j + 1 slots of its parent (j below seven): {@code split[WIDTH i + j]} is 0 where the node takes one slot itself (a
-     * wide node), else the slots its first child's subtree takes (its second child's take the rest).
+     * The optimal collapse's choices, for binary interior node i of at most {@link #GREEDY_ABOVE} leaves taking at
+     * most j + 1 slots of its parent (j below seven): {@code split[WIDTH i + j]} is 0 where the node takes one slot
+     * itself (a wide node), else the slots its first child's subtree takes (its second child's take the rest).
      */
     private final byte[] split;
     /** For such a node as a wide node: the slots of its eight that its first child's subtree takes. */
