@@ -115,7 +115,7 @@ final class ClosestHitTraversal {
                     }
                 } else {
                     // All children's boxes come with this node: test them, go to the nearest, postpone the others.
-                    int o = BVH.NODE_STRIDE * link;
+                    int o = BVH.nodeOffset(link);
                     visits += BVH.WIDTH;
                     int mask = boxTest.test(nodes, o, slabs, tMinF, tMaxF, entries);
                     if (mask != 0) {

@@ -166,12 +166,12 @@ final class CompiledPrimitives {
      */
     private void fillLeaves(BVH bvh, FilledLeaves filled) {
         float[] nodes = bvh.nodes;
-        int nodeCount = nodes.length / BVH.NODE_STRIDE;
+        int nodeCount = (nodes.length - BVH.FIRST_NODE) / BVH.NODE_STRIDE;
         if (bvh.rootCount > 0) fillLeaf(bvh, filled, bvh.rootLink, bvh.rootCount, new double[9 * LeafFilter.LANES]);
         BuildPool.forEachChunk(nodeCount, PARALLEL_LAYOUT / BVH.WIDTH, true, (chunk, from, to) -> {
             double[] copy = new double[9 * LeafFilter.LANES];
             for (int node = from; node < to; node++) {
-                int o = BVH.NODE_STRIDE * node;
+                int o = BVH.nodeOffset(node);
                 for (int c = 0; c < BVH.WIDTH; c++) {
                     int count = Float.floatToRawIntBits(nodes[o + BVH.COUNT + c]);
                     int link = Float.floatToRawIntBits(nodes[o + BVH.LINK + c]);

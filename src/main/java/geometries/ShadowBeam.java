@@ -175,7 +175,7 @@ final class ShadowBeam {
             int sp = 0;
             int link = bvh.rootLink;
             while (true) {
-                int o = BVH.NODE_STRIDE * link;
+                int o = BVH.nodeOffset(link);
                 scratch.nodeVisits += BVH.WIDTH;
                 int mask = boxTest.test(nodes, o, fat, tMinF, tMaxF, entries) & ~skip;
                 skip = 0;

@@ -212,7 +212,7 @@ final class ShadowQueries {
                             }
                         }
                     } else {
-                        int o = BVH.NODE_STRIDE * link;
+                        int o = BVH.nodeOffset(link);
                         visits += BVH.WIDTH;
                         // Any hit will do: no ordering, postpone every child hit but the first. (Taking the
                         // nearest first measured the same on the street's shadow rays, docs/BENCHMARKS.md.)

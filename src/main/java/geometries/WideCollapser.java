@@ -120,7 +120,7 @@ final class WideCollapser {
 
     /** {@code wideNodes}: from {@link #countWideNodes}, so the array is allocated once at its final size. */
     void allocate(int wideNodes) {
-        nodes = new float[NODE_STRIDE * wideNodes];
+        nodes = new float[BVH.FIRST_NODE + NODE_STRIDE * wideNodes];
     }
 
     /**
@@ -302,7 +302,7 @@ final class WideCollapser {
             System.arraycopy(children, 0, rootChildren, 0, n);
             rootChildCount = n;
         }
-        int o = NODE_STRIDE * self;
+        int o = BVH.nodeOffset(self);
         for (int c = 0; c < WIDTH; c++) {
             if (c >= n) {
                 // An empty box: every slab test misses it (its near distance is +inf or NaN).

@@ -52,6 +52,16 @@ class BVHTest {
         }
     }
 
+    /**
+     * The padding before the first node fits the JVM running the tests: where G1 puts a large array at a region's
+     * start, its data begins the array's base offset in, and the first node must then start on a 64-byte line.
+     */
+    @Test
+    void nodesStartOnACacheLineWhereALargeArrayStartsOnARegion() {
+        assertEquals(0, (sun.misc.Unsafe.ARRAY_FLOAT_BASE_OFFSET + Float.BYTES * BVH.FIRST_NODE) % 64);
+        assertEquals(0, Float.BYTES * BVH.NODE_STRIDE % 64, "every node a whole number of lines");
+    }
+
     @Test
     void singlePrimitiveIsOneLeaf() {
         BVH bvh = BVH.build(new double[] {0, 0, 0, 1, 2, 3}, 16, 4);
