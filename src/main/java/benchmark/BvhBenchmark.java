@@ -134,11 +134,12 @@ public final class BvhBenchmark {
     private void run() {
         System.out.printf(
                 Locale.ROOT,
-                "BVH benchmark: %d timed passes per figure (median), threads %s, %d cores, Java %s%n%n",
+                "BVH benchmark: %d timed passes per figure (median), threads %s, %d cores, Java %s, JVM flags %s%n%n",
                 runs,
                 Arrays.toString(threadCounts),
                 Runtime.getRuntime().availableProcessors(),
-                System.getProperty("java.version"));
+                System.getProperty("java.version"),
+                ManagementFactory.getRuntimeMXBean().getInputArguments());
         List<String> rows = new ArrayList<>();
         List<String> notes = new ArrayList<>();
         for (Workload workload : WORKLOADS) {
