@@ -179,15 +179,15 @@ public final class BVH {
     }
 
     static BVH build(double[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
-        return build(roundedOutward(primitiveBounds), bins, maxLeafSize, parallel, secondGroup);
+        return build(FloatBoxes.roundedOutward(primitiveBounds), bins, maxLeafSize, parallel, secondGroup);
     }
 
     /**
      * {@link #build(double[], int, int, boolean, boolean[])} over boxes already in floats ({@link #BOX_STRIDE} per
-     * primitive), each holding its primitive ({@link #roundedOutward}, or padded as {@link PrimitiveCollector#boxes}
-     * gives them): the builder reads nothing else, and half the bytes of doubles per primitive and pass made the 1M
-     * heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov). Bounds at -0.0 are set to 0.0
-     * in place (the same boxes), as {@link PrimitiveBinning#bin} requires.
+     * primitive), each holding its primitive ({@link FloatBoxes#roundedOutward}, or padded as {@link
+     * PrimitiveCollector#boxes} gives them): the builder reads nothing else, and half the bytes of doubles per
+     * primitive and pass made the 1M heightfield's binary tree about 1.05-1.1x faster (docs/BENCHMARKS.md, 27 Nov).
+     * Bounds at -0.0 are set to 0.0 in place (the same boxes), as {@link PrimitiveBinning#bin} requires.
      */
     static BVH build(float[] primitiveBounds, int bins, int maxLeafSize, boolean parallel, boolean[] secondGroup) {
         return build(primitiveBounds, bins, maxLeafSize, FilledLeaves.NONE, parallel, secondGroup);
@@ -202,90 +202,8 @@ public final class BVH {
             boolean parallel,
             boolean[] secondGroup) {
         validateSettings(bins, maxLeafSize);
-        if (primitiveBounds.length % BOX_STRIDE != 0) {
-            throw new IllegalArgumentException("primitive bounds must hold " + BOX_STRIDE + " values per primitive");
-        }
-        if (primitiveBounds.length == 0) {
-            throw new IllegalArgumentException("a BVH needs at least one primitive");
-        }
-        // A pass over every box, in chunks on all cores where there are many (one core took 7 ms for a million).
-        int n = primitiveBounds.length / BOX_STRIDE;
-        int[] firstBad = new int[BuildPool.chunks(n, CHECK_CHUNK)];
-        BuildPool.forEachChunk(n, CHECK_CHUNK, parallel, (chunk, from, to) -> {
-            firstBad[chunk] = checkAndNormalize(primitiveBounds, from, to);
-        });
-        // The first bad box of all: the first one found by the first chunk that found one.
-        for (int bad : firstBad) {
-            if (bad >= 0) {
-                int b = BOX_STRIDE * bad;
-                for (int a = 0; a < 3; a++) {
-                    requireBox(bad, a, primitiveBounds[b + a], primitiveBounds[b + BOX_MAX + a]);
-                }
-            }
-        }
+        FloatBoxes.checkAndNormalize(primitiveBounds, parallel);
         return new BVH(new BvhBuilder(primitiveBounds, bins, maxLeafSize, filled, parallel, secondGroup), parallel);
-    }
-
-    /** Boxes per chunk of the check in {@link #build(float[], int, int, boolean, boolean[])}. */
-    private static final int CHECK_CHUNK = 1 << 16;
-
-    /**
-     * Sets the bounds at -0.0 of boxes {@code [from, to)} to 0.0 (the same bound: the vectorized binning's minima and
-     * maxima need no signed zeros) and returns the first box that is empty or NaN on some axis, or -1.
-     */
-    private static int checkAndNormalize(float[] boxes, int from, int to) {
-        int firstBad = -1;
-        for (int p = from; p < to; p++) {
-            int b = BOX_STRIDE * p;
-            for (int a = 0; a < 3; a++) {
-                if (!(boxes[b + a] <= boxes[b + BOX_MAX + a]) && firstBad < 0) firstBad = p;
-                boxes[b + a] += 0.0f;
-                boxes[b + BOX_MAX + a] += 0.0f;
-            }
-        }
-        return firstBad;
-    }
-
-    /**
-     * Boxes given in doubles (six per primitive), each rounded outward to floats in the build's layout ({@link
-     * #BOX_STRIDE} per primitive); a box empty or NaN in doubles is refused here, since rounding could make a box empty
-     * by less than a float's step look valid.
-     */
-    static float[] roundedOutward(double[] bounds) {
-        if (bounds.length % 6 != 0) {
-            throw new IllegalArgumentException("primitive bounds must hold 6 values per primitive");
-        }
-        int n = bounds.length / 6;
-        float[] rounded = new float[BOX_STRIDE * n];
-        for (int p = 0; p < n; p++) {
-            for (int a = 0; a < 3; a++) {
-                double lo = bounds[6 * p + a], hi = bounds[6 * p + 3 + a];
-                requireBox(p, a, lo, hi);
-                rounded[BOX_STRIDE * p + a] = floatBelow(lo);
-                rounded[BOX_STRIDE * p + BOX_MAX + a] = floatAbove(hi);
-            }
-        }
-        return rounded;
-    }
-
-    /** Throws unless {@code lo <= hi}, written so that NaN fails too: a NaN box would poison every box above it. */
-    private static void requireBox(int primitive, int axis, double lo, double hi) {
-        if (!(lo <= hi)) {
-            throw new IllegalArgumentException("primitive " + primitive + " has an empty or NaN box on axis " + axis
-                    + ": [" + lo + ", " + hi + "]");
-        }
-    }
-
-    /** The largest float not above {@code x}. */
-    static float floatBelow(double x) {
-        float f = (float) x;
-        return f > x ? Math.nextDown(f) : f;
-    }
-
-    /** The smallest float not below {@code x}. */
-    static float floatAbove(double x) {
-        float f = (float) x;
-        return f < x ? Math.nextUp(f) : f;
     }
 
     /** Throws unless {@code bins} is in [2, 256] and {@code maxLeafSize} in [1, 64]. */

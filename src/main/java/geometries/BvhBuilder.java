@@ -22,8 +22,8 @@ final class BvhBuilder {
     private final SahSplitter splitter;
 
     /**
-     * Six floats per node, its box rounded outward ({@link BVH#floatBelow}, {@link BVH#floatAbove}): all the collapse
-     * and the traversal need, at half the memory of doubles.
+     * Six floats per node, its box rounded outward ({@link FloatBoxes#floatBelow}, {@link FloatBoxes#floatAbove}): all
+     * the collapse and the traversal need, at half the memory of doubles.
      */
     float[] bounds;
 

@@ -58,8 +58,8 @@ final class SahSplitter {
     /** Writes the box of the summary at {@code summary[at..]}, rounded outward to floats, to {@code box[boxAt..]}. */
     static void roundedBox(double[] summary, int at, float[] box, int boxAt) {
         for (int a = 0; a < 3; a++) {
-            box[boxAt + a] = BVH.floatBelow(summary[at + MIN + a]);
-            box[boxAt + 3 + a] = BVH.floatAbove(summary[at + MAX + a]);
+            box[boxAt + a] = FloatBoxes.floatBelow(summary[at + MIN + a]);
+            box[boxAt + 3 + a] = FloatBoxes.floatAbove(summary[at + MAX + a]);
         }
     }
 

@@ -48,7 +48,7 @@ abstract class WideBoxTest {
         int mask = 0;
         for (int c = 0; c < BVH.WIDTH; c++) {
             double e = entryInDouble(nodes, o + c, ray, tMin, tMax);
-            entries[c] = e < BoundingBox.MISS ? BVH.floatBelow(e) : MISS;
+            entries[c] = e < BoundingBox.MISS ? FloatBoxes.floatBelow(e) : MISS;
             if (e < BoundingBox.MISS) mask |= 1 << c;
         }
         return mask;

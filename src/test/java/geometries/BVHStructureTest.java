@@ -92,8 +92,8 @@ class BVHStructureTest {
         }
         BoundingBox b = node.bounds();
         double[] expected = {
-            BVH.floatBelow(u[0]), BVH.floatBelow(u[1]), BVH.floatBelow(u[2]),
-            BVH.floatAbove(u[3]), BVH.floatAbove(u[4]), BVH.floatAbove(u[5])
+            FloatBoxes.floatBelow(u[0]), FloatBoxes.floatBelow(u[1]), FloatBoxes.floatBelow(u[2]),
+            FloatBoxes.floatAbove(u[3]), FloatBoxes.floatAbove(u[4]), FloatBoxes.floatAbove(u[5])
         };
         double[] actual = {b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ};
         assertArrayEquals(expected, actual, "node " + i);

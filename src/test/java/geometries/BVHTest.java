@@ -101,27 +101,27 @@ class BVHTest {
         double[] corners = {0, 0, 0, s, s, s, 1, 0, 0, 1 + s, s, s, 0, 1, 0, s, 1 + s, s, 1, 1, 0, 1 + s, 1 + s, s};
         assertEquals(
                 1,
-                BVH.build(BVH.roundedOutward(corners), 16, 4, new FilledLeaves(4, null), false, null)
+                BVH.build(FloatBoxes.roundedOutward(corners), 16, 4, new FilledLeaves(4, null), false, null)
                         .leafCount());
         assertEquals(
                 2,
-                BVH.build(BVH.roundedOutward(corners), 16, 2, new FilledLeaves(4, null), false, null)
+                BVH.build(FloatBoxes.roundedOutward(corners), 16, 2, new FilledLeaves(4, null), false, null)
                         .leafCount());
-        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, FilledLeaves.NONE, false, null)
+        assertTrue(BVH.build(FloatBoxes.roundedOutward(corners), 16, 4, FilledLeaves.NONE, false, null)
                         .leafCount()
                 > 1);
-        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, new FilledLeaves(3, null), false, null)
+        assertTrue(BVH.build(FloatBoxes.roundedOutward(corners), 16, 4, new FilledLeaves(3, null), false, null)
                         .leafCount()
                 > 1);
         // A group with a primitive the filter does not take (a sphere, say) is left to the SAH.
         FilledLeaves oneNotFiltered = new FilledLeaves(4, new boolean[] {true, true, false, true});
-        assertTrue(BVH.build(BVH.roundedOutward(corners), 16, 4, oneNotFiltered, false, null)
+        assertTrue(BVH.build(FloatBoxes.roundedOutward(corners), 16, 4, oneNotFiltered, false, null)
                         .leafCount()
                 > 1);
         FilledLeaves allFiltered = new FilledLeaves(4, new boolean[] {true, true, true, true});
         assertEquals(
                 1,
-                BVH.build(BVH.roundedOutward(corners), 16, 4, allFiltered, false, null)
+                BVH.build(FloatBoxes.roundedOutward(corners), 16, 4, allFiltered, false, null)
                         .leafCount());
     }
 

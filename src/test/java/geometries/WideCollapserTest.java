@@ -81,7 +81,7 @@ class WideCollapserTest {
     }
 
     private static BvhBuilder builder(double[] boxes, int maxLeafSize) {
-        return new BvhBuilder(BVH.roundedOutward(boxes), 16, maxLeafSize, FilledLeaves.NONE, false, null);
+        return new BvhBuilder(FloatBoxes.roundedOutward(boxes), 16, maxLeafSize, FilledLeaves.NONE, false, null);
     }
 
     private static boolean isLeaf(BvhBuilder b, int node) {
