@@ -91,13 +91,8 @@ final class CompiledPrimitives {
 
     /**
      * Lays out the primitives {@code c} collected in the leaf order of {@code bvh}, or in insertion order when
-     * {@code bvh} is null.
+     * {@code bvh} is null; the leaves {@code filled} takes lane by lane.
      */
-    CompiledPrimitives(PrimitiveCollector c, BVH bvh) {
-        this(c, bvh, FilledLeaves.NONE);
-    }
-
-    /** Lays out as {@link #CompiledPrimitives(PrimitiveCollector, BVH)}, in lanes the leaves {@code filled} takes. */
     CompiledPrimitives(PrimitiveCollector c, BVH bvh, FilledLeaves filled) {
         int n = c.count;
         boundedCount = n;

@@ -7,6 +7,8 @@ import static geometries.BVH.MIN_X;
 import static geometries.BVH.NODE_STRIDE;
 import static geometries.BVH.WIDTH;
 
+import java.util.Arrays;
+
 /**
  * Collapses a {@link BvhBuilder}'s binary tree into the wide nodes of a {@link BVH}, written depth-first. Which binary
  * nodes become wide nodes is decided two ways:
@@ -213,7 +215,7 @@ final class WideCollapser {
         // cost[WIDTH (i - root) + j]: the least area inside node i's subtree in at most j + 1 slots (0 for a leaf).
         for (int i = root + size - 1; i >= root; i--) {
             if (isLeaf(b, i)) {
-                java.util.Arrays.fill(cost, WIDTH * (i - root), WIDTH * (i - root + 1), 0f);
+                Arrays.fill(cost, WIDTH * (i - root), WIDTH * (i - root + 1), 0f);
                 continue;
             }
             int right = b.data[2 * i];
