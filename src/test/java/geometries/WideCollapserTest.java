@@ -50,18 +50,13 @@ class WideCollapserTest {
     /** Near the leaves the greedy collapse leaves nodes part empty; the optimal one needs fewer wide nodes here. */
     @Test
     void aMeshNeedsFewerWideNodesThanGreedily() {
-        Mesh mesh = Meshes.icosphere(4); // 5,120 triangles
-        double[] v = mesh.getVertices();
-        int[] t = mesh.getIndices();
-        double[] boxes = new double[6 * mesh.triangleCount()];
-        for (int p = 0; p < mesh.triangleCount(); p++) {
-            for (int a = 0; a < 3; a++) {
-                double x0 = v[3 * t[3 * p] + a], x1 = v[3 * t[3 * p + 1] + a], x2 = v[3 * t[3 * p + 2] + a];
-                boxes[6 * p + a] = Math.min(x0, Math.min(x1, x2));
-                boxes[6 * p + 3 + a] = Math.max(x0, Math.max(x1, x2));
-            }
-        }
-        BvhBuilder b = builder(boxes, 4);
+        // The triangles' boxes as the accelerator collects them (5,120 of an icosphere), checked as a build checks
+        // them.
+        PrimitiveCollector collector = new PrimitiveCollector();
+        collector.collect(Meshes.icosphere(4));
+        float[] boxes = collector.boxes();
+        FloatBoxes.checkAndNormalize(boxes, false);
+        BvhBuilder b = new BvhBuilder(boxes, 16, 4, FilledLeaves.NONE, false, null);
         int optimal = new WideCollapser(b, false).countWideNodes(0);
         int greedy = new WideCollapser(b, false, 0).countWideNodes(0);
         assertTrue(optimal < greedy, optimal + " wide nodes, greedily " + greedy);
