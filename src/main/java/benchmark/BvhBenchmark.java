@@ -27,13 +27,13 @@ import primitives.Vector;
  */
 public final class BvhBenchmark {
     /** Pinhole resolution of the coherent rays. */
-    static final int IMAGE_SIZE = 1024;
+    public static final int IMAGE_SIZE = 1024;
     /** Vertical field of view of the coherent rays, degrees. */
-    static final double FOV_DEGREES = 45;
+    public static final double FOV_DEGREES = 45;
     /** Incoherent rays per workload. */
-    static final int INCOHERENT_RAYS = 1 << 20;
-
-    static final long SEED = 20240613L;
+    public static final int INCOHERENT_RAYS = 1 << 20;
+    /** Seed of the incoherent rays and of the spheres-polygons scene. */
+    public static final long SEED = 20240613L;
     /** Primitive tests a brute-force pass may spend: sets the size of its ray sample. */
     private static final double BRUTE_FORCE_BUDGET = 2e7;
 
@@ -49,7 +49,7 @@ public final class BvhBenchmark {
     private static final int MIN_WARM_UP_BUILDS = 5;
 
     /** The workloads; adding one is adding a line. */
-    static final List<Workload> WORKLOADS = List.of(
+    public static final List<Workload> WORKLOADS = List.of(
             new Workload(
                     "heightfield-100k",
                     () -> Meshes.heightfield(224),

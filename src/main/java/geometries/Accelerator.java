@@ -108,6 +108,11 @@ public final class Accelerator implements Intersectable {
         return bvh;
     }
 
+    /** The flat arrays both searches read (for the kernel's C twin, which exports them). */
+    CompiledPrimitives compiledPrimitives() {
+        return primitives;
+    }
+
     /** Whether some leaves are filled and tested by the {@link LeafFilter}: there is a filter and a large mesh. */
     boolean filtersLeaves() {
         return primitives.filtersLeaves;

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The closest-hit kernel's C twin beside the library and, where its anchor is set up, Embree: one thread each, the
+# three alternated per round, M rays per CPU-second (docs/BENCHMARKS.md, "The kernel's C twin").
+#
+#   benchmarks/kernel-twin/run.sh [ROUNDS] [WORKLOADS]
+#
+# ROUNDS defaults to 3, WORKLOADS to the four meshes of the BVH benchmark. Needs Linux, gcc and a CPU with AVX2 and FMA;
+# Embree runs if ../embree-venv and ../shared/anchors/embree_bench.py exist (../shared/anchors/README.md). The
+# exported arrays go to target/kernel-twin (about 120 MB per mesh).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+rounds=${1:-3}
+workloads=${2:-heightfield-100k,heightfield-1M,icosphere-82k,icosphere-1.3M}
+out=target/kernel-twin
+mkdir -p "$out"
+
+mvn -q test-compile
+java=(java -Xms4g -Xmx4g -XX:+AlwaysPreTouch -XX:+UseTransparentHugePages --add-modules jdk.incubator.vector
+    -cp target/test-classes:target/classes geometries.KernelTwinExport)
+gcc -O2 -mavx2 -mfma -ffp-contract=off -o "$out/twin" benchmarks/kernel-twin/twin.c -lm
+
+for w in ${workloads//,/ }; do "${java[@]}" "$out/$w" "$w" 0 2>/dev/null; done
+
+python=../embree-venv/bin/python
+anchor=../shared/anchors/embree_bench.py
+for r in $(seq 1 "$rounds"); do
+    echo "round $r ($(date -u +%H:%M:%S) UTC)"
+    if [[ -x $python && -f $anchor ]]; then
+        "$python" "$anchor" 1 "$out/embree-$r.json" >"$out/embree-$r.log" 2>&1
+        "$python" - "$out/embree-$r.json" <<'EOF'
+import json, sys
+for e in json.load(open(sys.argv[1])):
+    for rays in ("coherent", "incoherent"):
+        print(f"embree {e['mesh']} {e['tris']} triangles {rays}: {e[rays + '_1t_Mrays_per_cpu_s']:.2f} M rays/CPU-s")
+EOF
+    fi
+    for w in ${workloads//,/ }; do "$out/twin" "$out/$w" 5; done
+    for w in ${workloads//,/ }; do "${java[@]}" "$out/$w" "$w" 5 time-only 2>/dev/null; done
+done
