@@ -17,16 +17,23 @@ mkdir -p "$out"
 mvn -q test-compile
 java=(java -Xms4g -Xmx4g -XX:+AlwaysPreTouch -XX:+UseTransparentHugePages --add-modules jdk.incubator.vector
     -cp target/test-classes:target/classes geometries.KernelTwinExport)
+# The library's side: its standard error (the incubator module's warning) is shown only if it fails.
+library() {
+    "${java[@]}" "$@" 2>"$out/library.err" || { cat "$out/library.err" >&2; exit 1; }
+}
 gcc -O2 -mavx2 -mfma -ffp-contract=off -o "$out/twin" benchmarks/kernel-twin/twin.c -lm
 
-for w in ${workloads//,/ }; do "${java[@]}" "$out/$w" "$w" 0 2>/dev/null; done
+for w in ${workloads//,/ }; do library "$out/$w" "$w" 0; done
 
 python=../embree-venv/bin/python
 anchor=../shared/anchors/embree_bench.py
 for r in $(seq 1 "$rounds"); do
     echo "round $r ($(date -u +%H:%M:%S) UTC)"
     if [[ -x $python && -f $anchor ]]; then
-        "$python" "$anchor" 1 "$out/embree-$r.json" >"$out/embree-$r.log" 2>&1
+        if ! "$python" "$anchor" 1 "$out/embree-$r.json" >"$out/embree-$r.log" 2>&1; then
+            echo "Embree's run failed: see $out/embree-$r.log" >&2
+            exit 1
+        fi
         "$python" - "$out/embree-$r.json" <<'EOF'
 import json, sys
 for e in json.load(open(sys.argv[1])):
@@ -35,5 +42,5 @@ for e in json.load(open(sys.argv[1])):
 EOF
     fi
     for w in ${workloads//,/ }; do "$out/twin" "$out/$w" 5; done
-    for w in ${workloads//,/ }; do "${java[@]}" "$out/$w" "$w" 5 time-only 2>/dev/null; done
+    for w in ${workloads//,/ }; do library "$out/$w" "$w" 5 time-only; done
 done

@@ -54,9 +54,20 @@ public final class KernelTwinExport {
         Workload workload = BvhBenchmark.WORKLOADS.stream()
                 .filter(w -> w.name().equals(args[1]))
                 .findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("no workload named " + args[1]));
+                .orElse(null);
+        if (workload == null) {
+            System.err.println("no workload named " + args[1] + "; the benchmark's are: "
+                    + BvhBenchmark.WORKLOADS.stream().map(Workload::name).toList());
+            System.exit(2);
+        }
         int passes = Integer.parseInt(args[2]);
         Accelerator accelerator = Accelerator.build(workload.scene().get(), true);
+        if (!onlyTriangles(accelerator.compiledPrimitives())) {
+            System.err.println(
+                    workload.name() + " holds other shapes than triangles or unbounded geometry; the twin "
+                            + "traces a tree of triangles only: heightfield-100k, heightfield-1M, icosphere-82k, icosphere-1.3M");
+            System.exit(2);
+        }
         Ray[][] sets = {
             RaySets.pinhole(
                     workload.eye(),
@@ -76,6 +87,17 @@ public final class KernelTwinExport {
             System.out.printf(
                     "java %s %s: %.2f M rays/CPU-s%n", workload.name(), names[s], speed(accelerator, sets[s], passes));
         }
+    }
+
+    /** Whether every primitive is a triangle in the tree, the only kind the twin traces. */
+    static boolean onlyTriangles(CompiledPrimitives primitives) {
+        if (primitives.unbounded.length > 0) return false;
+        for (int k = 0; k < primitives.boundedCount; k++) {
+            if (primitives.info[CompiledPrimitives.INFO * k + CompiledPrimitives.EDGES] == CompiledPrimitives.OBJECT) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Writes the header, the kernel's arrays, each ray set and its distances into {@code dir}. */

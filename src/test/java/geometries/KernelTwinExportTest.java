@@ -2,6 +2,7 @@ package geometries;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -57,6 +58,19 @@ class KernelTwinExportTest {
         assertEquals(-1, distances.getDouble(8));
         ByteBuffer rays = read(dir.resolve("incoherent"));
         assertEquals(incoherent[0].dz(), rays.getDouble(40));
+    }
+
+    @Test
+    void onlyATreeOfTrianglesIsExported() {
+        assertTrue(KernelTwinExport.onlyTriangles(
+                Accelerator.build(Meshes.heightfield(8), true).compiledPrimitives()));
+        Geometries withSphere = new Geometries(Meshes.heightfield(8), new Sphere(new Point(0, 0, 1), 0.1));
+        assertFalse(KernelTwinExport.onlyTriangles(
+                Accelerator.build(withSphere, true).compiledPrimitives()));
+        Geometries withPlane =
+                new Geometries(Meshes.heightfield(8), new Plane(new Point(0, 0, -1), new Vector(0, 0, 1)));
+        assertFalse(KernelTwinExport.onlyTriangles(
+                Accelerator.build(withPlane, true).compiledPrimitives()));
     }
 
     private static ByteBuffer read(Path file) throws IOException {
