@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The closest-hit kernel's C twin beside the library and, where its anchor is set up, Embree: one thread each, the
-# three alternated per round, M rays per CPU-second (docs/BENCHMARKS.md, "The kernel's C twin").
+# three alternated per round, M rays per CPU-second (docs/BENCHMARKS.md, "27 Nov, 14:00-14:40 UTC: the kernel's C
+# twin").
 #
 #   benchmarks/kernel-twin/run.sh [ROUNDS] [WORKLOADS]
 #
 # ROUNDS defaults to 3, WORKLOADS to the four meshes of the BVH benchmark. Needs Linux, gcc and a CPU with AVX2 and FMA;
 # Embree runs if ../embree-venv and ../shared/anchors/embree_bench.py exist (../shared/anchors/README.md). The
-# exported arrays go to target/kernel-twin (about 120 MB per mesh).
+# exported arrays go to target/kernel-twin (120-240 MB per mesh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 rounds=${1:-3}

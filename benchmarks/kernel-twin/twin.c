@@ -2,8 +2,9 @@
 // test of VectorWideBoxTest, the leaf filter of VectorLeafFilter and the watertight test of WatertightTriangle, with
 // the same operations in the same order (so the same bits), over the nodes, triangles, records and rays that
 // src/test/java/geometries/KernelTwinExport.java wrote. It checks every distance against the library's and prints
-// M rays per CPU-second. Diagnostic only (docs/BENCHMARKS.md, "The kernel's C twin"): beside the library's figure it
-// separates what the algorithm and its data cost from what the JIT's code costs. Linux, x86-64 with AVX2 and FMA:
+// M rays per CPU-second. Diagnostic only (docs/BENCHMARKS.md, "27 Nov, 14:00-14:40 UTC: the kernel's C twin"):
+// beside the library's figure it separates what the algorithm and its data cost from what the JIT's code costs.
+// Linux, x86-64 with AVX2 and FMA:
 //   gcc -O2 -mavx2 -mfma -ffp-contract=off -o twin twin.c -lm && ./twin DIR [passes]
 // -ffp-contract=off keeps gcc from fusing products and sums that Java rounds apart.
 #include <immintrin.h>

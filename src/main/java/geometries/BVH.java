@@ -112,7 +112,7 @@ public final class BVH {
         this.leafCount = b.leafCount;
         this.maxDepth = b.maxDepthReached;
         this.order = b.index;
-        boolean rootIsLeaf = b.data[1] > 0;
+        boolean rootIsLeaf = b.isLeaf(0);
         boolean large = parallel && b.nodeCount >= 2 * PARALLEL_GRAIN;
         WideCollapser c = new WideCollapser(b, large);
         if (rootIsLeaf) {

@@ -27,7 +27,12 @@ final class BvhBuilder {
      */
     float[] bounds;
 
+    /**
+     * Two ints per node: a leaf's first primitive (in {@link #index}) and its count, positive; an interior node's
+     * second child (its first follows it) and {@code -1 - axis} of its split.
+     */
     int[] data;
+
     int nodeCount;
     int leafCount;
     int maxDepthReached;
@@ -242,6 +247,18 @@ final class BvhBuilder {
         emit(split.right());
     }
 
+    /** Whether node {@code node} is a leaf. */
+    boolean isLeaf(int node) {
+        return data[2 * node + 1] > 0;
+    }
+
+    /** The surface area of node {@code node}'s box. */
+    double area(int node) {
+        int o = 6 * node;
+        return SahSplitter.surfaceArea(
+                bounds[o], bounds[o + 1], bounds[o + 2], bounds[o + 3], bounds[o + 4], bounds[o + 5]);
+    }
+
     /**
      * What opening each binary node is worth to the wide collapse: its box's surface area times the primitives below
      * it, the SAH's estimate of the work below it; -1 for a leaf, which cannot be opened.
@@ -255,10 +272,7 @@ final class BvhBuilder {
         for (int i = nodeCount - 1; i >= 0; i--) {
             int count = data[2 * i + 1];
             below[i] = count > 0 ? count : below[i + 1] + below[data[2 * i]];
-            int o = 6 * i;
-            double area = SahSplitter.surfaceArea(
-                    bounds[o], bounds[o + 1], bounds[o + 2], bounds[o + 3], bounds[o + 4], bounds[o + 5]);
-            work[i] = count > 0 ? -1 : area * below[i];
+            work[i] = count > 0 ? -1 : area(i) * below[i];
         }
         return work;
     }

@@ -70,7 +70,7 @@ final class WideCollapser {
         int n = b.nodeCount;
         leaves = new int[n];
         // Children follow their parents in depth-first order: one backward sweep counts every subtree's leaves.
-        for (int i = n - 1; i >= 0; i--) leaves[i] = isLeaf(b, i) ? 1 : leaves[i + 1] + leaves[b.data[2 * i]];
+        for (int i = n - 1; i >= 0; i--) leaves[i] = b.isLeaf(i) ? 1 : leaves[i + 1] + leaves[b.data[2 * i]];
         work = leaves[0] > greedyAbove ? b.workBelow() : null;
         split = new byte[WIDTH * n];
         ownSplit = new byte[n];
@@ -104,17 +104,17 @@ final class WideCollapser {
         int n = open(0, children);
         int[] sizes = new int[n];
         BuildPool.forEach(n, true, c -> {
-            if (!isLeaf(b, children[c])) sizes[c] = countWideNodes(children[c]);
+            if (!b.isLeaf(children[c])) sizes[c] = countWideNodes(children[c]);
         });
         int[] links = new int[n];
         int next = 1;
         for (int c = 0; c < n; c++) {
-            links[c] = isLeaf(b, children[c]) ? b.data[2 * children[c]] : next;
+            links[c] = b.isLeaf(children[c]) ? b.data[2 * children[c]] : next;
             next += sizes[c];
         }
         allocate(next);
         BuildPool.forEach(n, true, c -> {
-            if (!isLeaf(b, children[c])) new WideCollapser(this, links[c]).collapse(children[c]);
+            if (!b.isLeaf(children[c])) new WideCollapser(this, links[c]).collapse(children[c]);
         });
         count = next;
         write(0, children, n, links);
@@ -135,7 +135,7 @@ final class WideCollapser {
         int n = open(binary, children);
         int total = 1;
         for (int c = 0; c < n; c++) {
-            if (!isLeaf(b, children[c])) total += countWideNodes(children[c]);
+            if (!b.isLeaf(children[c])) total += countWideNodes(children[c]);
         }
         return total;
     }
@@ -153,7 +153,7 @@ final class WideCollapser {
 
     /** Appends the binary nodes that the optimal collapse gives {@code node}'s subtree in {@code slots} slots. */
     private int expand(int node, int slots, int[] children, int n) {
-        int first = isLeaf(b, node) ? 0 : split[WIDTH * node + slots - 1];
+        int first = b.isLeaf(node) ? 0 : split[WIDTH * node + slots - 1];
         if (first == 0) {
             children[n] = node;
             return n + 1;
@@ -192,7 +192,7 @@ final class WideCollapser {
      * collapse takes; returns the new count.
      */
     private int optimalRoots(int binary, int[] roots, int n) {
-        if (isLeaf(b, binary)) return n;
+        if (b.isLeaf(binary)) return n;
         if (leaves[binary] <= greedyAbove) {
             roots[n] = binary;
             return n + 1;
@@ -214,7 +214,7 @@ final class WideCollapser {
         int size = 2 * leaves[root] - 1;
         // cost[WIDTH (i - root) + j]: the least area inside node i's subtree in at most j + 1 slots (0 for a leaf).
         for (int i = root + size - 1; i >= root; i--) {
-            if (isLeaf(b, i)) {
+            if (b.isLeaf(i)) {
                 Arrays.fill(cost, WIDTH * (i - root), WIDTH * (i - root + 1), 0f);
                 continue;
             }
@@ -237,15 +237,7 @@ final class WideCollapser {
                 }
             }
             ownSplit[i] = (byte) first;
-            int bo = 6 * i;
-            float own = (float) SahSplitter.surfaceArea(
-                            b.bounds[bo],
-                            b.bounds[bo + 1],
-                            b.bounds[bo + 2],
-                            b.bounds[bo + 3],
-                            b.bounds[bo + 4],
-                            b.bounds[bo + 5])
-                    + inside;
+            float own = (float) b.area(i) + inside;
             cost[o] = own;
             // A child takes at most seven of its parent's eight slots (its sibling takes one or more).
             int most = Math.min(WIDTH - 1, leftLeaves + rightLeaves);
@@ -292,7 +284,7 @@ final class WideCollapser {
         int n = open(binary, children);
         int[] links = new int[n];
         for (int c = 0; c < n; c++) {
-            links[c] = isLeaf(b, children[c]) ? b.data[2 * children[c]] : collapse(children[c]);
+            links[c] = b.isLeaf(children[c]) ? b.data[2 * children[c]] : collapse(children[c]);
         }
         write(self, children, n, links);
         return self;
@@ -319,13 +311,9 @@ final class WideCollapser {
                 nodes[o + MIN_X + WIDTH * a + c] = b.bounds[6 * child + a];
                 nodes[o + MAX_X + WIDTH * a + c] = b.bounds[6 * child + 3 + a];
             }
-            boolean leaf = isLeaf(b, child);
+            boolean leaf = b.isLeaf(child);
             nodes[o + LINK + c] = Float.intBitsToFloat(links[c]);
             nodes[o + COUNT + c] = Float.intBitsToFloat(leaf ? b.data[2 * child + 1] : 0);
         }
-    }
-
-    private static boolean isLeaf(BvhBuilder b, int binary) {
-        return b.data[2 * binary + 1] > 0;
     }
 }

@@ -22,7 +22,8 @@ import primitives.Ray;
  * each), and the distance the library finds along each ray (-1 for a miss); the twin traces the same rays through the
  * same arrays with the same operations and checks every distance bit for bit. Then it traces both sets in this JVM,
  * one thread, and prints the median of the passes in M rays per CPU-second, as the benchmark does. The two figures
- * are the same work compiled by HotSpot and by gcc (docs/BENCHMARKS.md, "The kernel's C twin").
+ * are the same work compiled by HotSpot and by gcc (docs/BENCHMARKS.md, "27 Nov, 14:00-14:40 UTC: the kernel's C
+ * twin").
  *
  * <p>Usage: {@code KernelTwinExport DIR WORKLOAD PASSES [time-only]}, run by {@code benchmarks/kernel-twin/run.sh}.
  * It lives in the test sources to reach the package-private arrays without shipping in the library.

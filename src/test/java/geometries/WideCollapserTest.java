@@ -3,6 +3,7 @@ package geometries;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.SplittableRandom;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
@@ -79,23 +80,13 @@ class WideCollapserTest {
         return new BvhBuilder(FloatBoxes.roundedOutward(boxes), 16, maxLeafSize, FilledLeaves.NONE, false, null);
     }
 
-    private static boolean isLeaf(BvhBuilder b, int node) {
-        return b.data[2 * node + 1] > 0;
-    }
-
-    private static double area(BvhBuilder b, int node) {
-        int o = 6 * node;
-        float[] f = b.bounds;
-        return SahSplitter.surfaceArea(f[o], f[o + 1], f[o + 2], f[o + 3], f[o + 4], f[o + 5]);
-    }
-
     /** The total area of the binary nodes that become wide nodes, from {@code binary} down, as {@code c} opens them. */
     private static double wideNodeArea(BvhBuilder b, WideCollapser c, int binary) {
         int[] children = new int[BVH.WIDTH];
         int n = c.open(binary, children);
-        double sum = area(b, binary);
+        double sum = b.area(binary);
         for (int i = 0; i < n; i++) {
-            if (!isLeaf(b, children[i])) sum += wideNodeArea(b, c, children[i]);
+            if (!b.isLeaf(children[i])) sum += wideNodeArea(b, c, children[i]);
         }
         return sum;
     }
@@ -106,17 +97,17 @@ class WideCollapserTest {
      */
     private static double leastAreaOfAllCollapses(BvhBuilder b) {
         int[] interior =
-                IntStream.range(1, b.nodeCount).filter(i -> !isLeaf(b, i)).toArray();
+                IntStream.range(1, b.nodeCount).filter(i -> !b.isLeaf(i)).toArray();
         double least = Double.POSITIVE_INFINITY;
         boolean[] wide = new boolean[b.nodeCount];
         for (long set = 0; set < 1L << interior.length; set++) {
-            java.util.Arrays.fill(wide, false);
+            Arrays.fill(wide, false);
             wide[0] = true;
-            double sum = area(b, 0);
+            double sum = b.area(0);
             for (int k = 0; k < interior.length; k++) {
                 if ((set >> k & 1) != 0) {
                     wide[interior[k]] = true;
-                    sum += area(b, interior[k]);
+                    sum += b.area(interior[k]);
                 }
             }
             if (sum >= least) continue;
@@ -131,7 +122,7 @@ class WideCollapserTest {
 
     /** The slots that binary node {@code node} takes in its wide parent: one if a leaf or wide, else its children's. */
     private static int slots(BvhBuilder b, boolean[] wide, int node) {
-        if (isLeaf(b, node) || wide[node]) return 1;
+        if (b.isLeaf(node) || wide[node]) return 1;
         return slots(b, wide, node + 1) + slots(b, wide, b.data[2 * node]);
     }
 }
