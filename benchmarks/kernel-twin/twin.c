@@ -5,7 +5,9 @@
 // M rays per CPU-second. Diagnostic only (docs/BENCHMARKS.md, "27 Nov, 14:00-14:40 UTC: the kernel's C twin"):
 // beside the library's figure it separates what the algorithm and its data cost from what the JIT's code costs.
 // Linux, x86-64 with AVX2 and FMA:
-//   gcc -O2 -mavx2 -mfma -ffp-contract=off -o twin twin.c -lm && ./twin DIR [passes]
+//   gcc -O2 -mavx2 -mfma -ffp-contract=off -o twin twin.c -lm && ./twin DIR [passes [prefetch]]
+// "prefetch" alternates the passes with a variant that prefetches as Embree does (docs/BENCHMARKS.md, "27 Nov,
+// 15:30-15:55 UTC").
 // -ffp-contract=off keeps gcc from fusing products and sums that Java rounds apart.
 #include <immintrin.h>
 #include <math.h>
@@ -29,6 +31,8 @@ static float *nodes;
 static double *triangles;
 static int32_t *info;
 static int rootLink, rootCount;
+// A probe the library cannot make: Java has no prefetch instruction (`twin DIR passes prefetch`).
+static int prefetching;
 
 // A ray with the constants Ray derives: reciprocals, the watertight test's axes and shear.
 typedef struct {
@@ -257,6 +261,30 @@ static inline int nodeInt(int at) {
     return value;
 }
 
+// As Embree's traversal does (BVH::prefetch): every hit child's lines requested as soon as the mask is known, so that
+// the misses of the children postponed overlap with the work on the nearest. Always inlined: as a call, gcc finds it
+// free of side effects (prefetches do not count) and drops it.
+static inline __attribute__((always_inline)) void prefetchChildren(int o, int mask) {
+    for (; mask; mask &= mask - 1) {
+        int c = __builtin_ctz(mask), link = nodeInt(o + LINK + c), count = nodeInt(o + COUNT + c);
+        if (count == 0) {
+            const char *p = (const char *)(nodes + FIRST_NODE + NODE_STRIDE * link);
+            __builtin_prefetch(p);
+            __builtin_prefetch(p + 64);
+            __builtin_prefetch(p + 128);
+            __builtin_prefetch(p + 192);
+        } else { // a leaf's lanes (288 bytes when full) and its first record
+            const char *p = (const char *)(triangles + 9 * link);
+            __builtin_prefetch(p);
+            __builtin_prefetch(p + 64);
+            __builtin_prefetch(p + 128);
+            __builtin_prefetch(p + 192);
+            __builtin_prefetch(p + 256);
+            __builtin_prefetch(info + INFO * link);
+        }
+    }
+}
+
 // ClosestHitTraversal.intersect over the tree: nearest child first, farther ones postponed on the stack.
 static int intersect(const Ray *ray, double tMin, double tMax, Hit *hit) {
     static int stack[2 * STACK_SIZE];
@@ -292,6 +320,7 @@ static int intersect(const Ray *ray, double tMin, double tMax, Hit *hit) {
             int o = FIRST_NODE + NODE_STRIDE * link;
             visits += WIDTH;
             int mask = boxTest(nodes + o, &s, tMinF, tMaxF, entries);
+            if (prefetching) prefetchChildren(o, mask);
             if (mask) {
                 int rest = mask & (mask - 1);
                 if (!rest) {
@@ -365,12 +394,17 @@ static int byValue(const void *a, const void *b) {
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        fprintf(stderr, "usage: twin DIR [passes]\n");
+        fprintf(stderr, "usage: twin DIR [passes [prefetch]]\n");
         return 2;
     }
     const char *dir = argv[1];
     int passes = argc > 2 ? atoi(argv[2]) : 5;
     if (passes < 1 || passes > 64) passes = 5;
+    int probe = argc > 3 && strcmp(argv[3], "prefetch") == 0;
+    if (argc > 3 && !probe) {
+        fprintf(stderr, "unknown probe %s: the only one is prefetch\n", argv[3]);
+        return 2;
+    }
     int32_t *header = load(dir, "header", NULL);
     for (int i = 0; i < LAYOUT_INTS; i++) {
         if (header[i] != LAYOUT[i]) {
@@ -413,17 +447,30 @@ int main(int argc, char **argv) {
             double t = intersect(&rays[i], 0, INFINITY, &hit) ? hit.t : -1;
             if (memcmp(&t, &expected[i], 8) != 0) mismatches++;
         }
-        // As the Java benchmark traces them: rays whose constants were derived beforehand.
-        double speeds[64];
+        // As the Java benchmark traces them: rays whose constants were derived beforehand. With "prefetch", the passes
+        // alternate between the twin as it is and with prefetching, and the median of the pass-by-pass ratios is the
+        // figure (the machine's drift cancels).
+        double speeds[64], prefetched[64], ratios[64];
         long hits = 0;
         for (int p = -1; p < passes; p++) {
-            double start = cpuSeconds();
-            for (int i = 0; i < n; i++) hits += intersect(&rays[i], 0, INFINITY, &hit);
-            if (p >= 0) speeds[p] = n / (cpuSeconds() - start) / 1e6;
+            for (int side = 0; side <= probe; side++) {
+                prefetching = probe && ((p + side) & 1);
+                double start = cpuSeconds();
+                for (int i = 0; i < n; i++) hits += intersect(&rays[i], 0, INFINITY, &hit);
+                double speed = n / (cpuSeconds() - start) / 1e6;
+                if (p >= 0) *(prefetching ? &prefetched[p] : &speeds[p]) = speed;
+            }
+            if (p >= 0 && probe) ratios[p] = prefetched[p] / speeds[p];
         }
         qsort(speeds, passes, sizeof(double), byValue);
         printf("twin %s %s: %.2f M rays/CPU-s, %ld of %d distances differ from the library's%s\n", dir, sets[set],
                 speeds[passes / 2], mismatches, n, hits < 0 ? " " : "");
+        if (probe) {
+            qsort(prefetched, passes, sizeof(double), byValue);
+            qsort(ratios, passes, sizeof(double), byValue);
+            printf("twin %s %s with prefetching: %.2f M rays/CPU-s, %.3fx the twin's (pass by pass, median)\n", dir,
+                    sets[set], prefetched[passes / 2], ratios[passes / 2]);
+        }
         free(rays);
     }
     return 0;
