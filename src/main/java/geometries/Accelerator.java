@@ -123,7 +123,6 @@ public final class Accelerator implements Intersectable {
      * LeafFilter#MIN_MESH} triangles; none without a filter.
      */
     private static FilledLeaves filledLeaves(PrimitiveCollector c) {
-        if (LeafFilter.SELECTED == null) return FilledLeaves.NONE;
         Geometry[] owners = c.ownerTable();
         boolean[] large = new boolean[owners.length];
         boolean anyLarge = false;
@@ -131,7 +130,9 @@ public final class Accelerator implements Intersectable {
             large[s] = owners[s] instanceof Mesh mesh && mesh.triangleCount() >= LeafFilter.MIN_MESH;
             anyLarge |= large[s];
         }
-        if (!anyLarge) return FilledLeaves.NONE;
+        // The filter is asked for only now: its class loads the Vector API, which a scene of small meshes and
+        // shapes need not wait for (MIN_MESH is a constant, read without loading the class).
+        if (!anyLarge || LeafFilter.SELECTED == null) return FilledLeaves.NONE;
         boolean[] filterable = new boolean[c.count];
         boolean all = true;
         for (int i = 0; i < c.count; i++) {

@@ -31,7 +31,8 @@ final class ClosestHitTraversal {
     /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
 
-    private final LeafFilter leafFilter = LeafFilter.SELECTED;
+    /** The leaf filter, read only where leaves are filled (its class loads the Vector API, tens of ms in a new JVM). */
+    private final LeafFilter leafFilter;
 
     ClosestHitTraversal(CompiledPrimitives primitives, BVH bvh) {
         boundedCount = primitives.boundedCount;
@@ -42,6 +43,7 @@ final class ClosestHitTraversal {
         unbounded = primitives.unbounded;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
+        leafFilter = primitives.filtersLeaves ? LeafFilter.SELECTED : null;
     }
 
     /** See {@link Accelerator#intersect}. */

@@ -5,19 +5,29 @@ package geometries;
  * summarizing a range ({@link #summarize}), and the merge of two summaries. Two implementations give bit-identical
  * results (minima and maxima are exact, and each centroid is the same double sum): a scalar one, and one on the
  * JDK's incubating Vector API that handles a box's three minima, three maxima and its centroid's coordinates in three
- * vectors of four doubles. Chosen at startup as {@link WideBoxTest} is: the vectorized one where the JVM has the
- * module and the CPU 256-bit vectors.
+ * vectors of four doubles. Chosen as {@link WideBoxTest} is, on first use ({@link #selected}): the vectorized one
+ * where the JVM has the module and the CPU 256-bit vectors.
  *
  * <p>A primitive's box is {@link BVH#BOX_STRIDE} floats ({@link BVH#BOX_MAX} the offset of its maximum corner); a
  * summary is {@link SahSplitter#SUMMARY} doubles, its box and its centroids' box, each corner in four (the fourth
  * unused), so that a vector of four doubles reads or writes a corner.
  */
 abstract class PrimitiveBinning {
-    /** The binning this JVM runs: vectorized where it can be, scalar otherwise. */
-    static final PrimitiveBinning SELECTED = select();
+    private static final PrimitiveBinning SCALAR = new ScalarPrimitiveBinning();
 
-    private static final PrimitiveBinning SCALAR =
-            SELECTED instanceof ScalarPrimitiveBinning ? SELECTED : new ScalarPrimitiveBinning();
+    /**
+     * The binning this JVM runs: vectorized where it can be, scalar otherwise. Made on first use, by a holder class:
+     * the vectorized class loads the Vector API, tens of milliseconds in a new JVM, which a tree of one primitive (a
+     * scene whose only bounded shape is a sphere, say) never needs.
+     */
+    static PrimitiveBinning selected() {
+        return Selected.BINNING;
+    }
+
+    private static final class Selected {
+        static final PrimitiveBinning BINNING = select();
+    }
+
     /** Primitives from which a range is binned by the scalar code until the vectorized code is {@link #warm}. */
     private static final int COLD_RANGE = 16;
     /** Calls of the vectorized code on smaller ranges after which it counts as compiled. */
@@ -29,19 +39,21 @@ abstract class PrimitiveBinning {
     private static boolean warm;
 
     /**
-     * The binning for a range of {@code primitives}: {@link #SELECTED}, except that until the vectorized code has run
-     * {@link #WARM_CALLS} times on smaller ranges, large ranges get the scalar code. Before the JIT compiles it, vector
-     * code runs as objects (each operation allocates) and is far slower than scalar code, and the top of a fresh JVM's
-     * first build is binned before anything is compiled. The 1M heightfield's first build in a fresh JVM, alternated
-     * with the build before the Vector API binning: with the vectorized code throughout 1.46 and 1.50 times as long
-     * (pairwise medians of two runs, four and three pairs), so 1.11-1.17 times (four runs of six pairs; the second build
-     * 0.75 times). Both give the same bins, so which runs changes no tree.
+     * The binning for a range of {@code primitives}: {@link #selected}, except that a single primitive gets the scalar
+     * code (nothing to gain, and a tree of one then never loads the vectorized class), and that until the vectorized
+     * code has run {@link #WARM_CALLS} times on smaller ranges, large ranges get the scalar code. Before the JIT
+     * compiles it, vector code runs as objects (each operation allocates) and is far slower than scalar code, and the
+     * top of a fresh JVM's first build is binned before anything is compiled. The 1M heightfield's first build in a
+     * fresh JVM, alternated with the build before the Vector API binning: with the vectorized code throughout 1.46 and
+     * 1.50 times as long (pairwise medians of two runs, four and three pairs), so 1.11-1.17 times (four runs of six
+     * pairs; the second build 0.75 times). Both give the same bins, so which runs changes no tree.
      */
     static PrimitiveBinning forRange(int primitives) {
-        if (warm) return SELECTED;
+        if (primitives < 2) return SCALAR;
+        if (warm) return selected();
         if (primitives >= COLD_RANGE) return SCALAR;
         if (++vectorCalls >= WARM_CALLS) warm = true;
-        return SELECTED;
+        return selected();
     }
 
     /**

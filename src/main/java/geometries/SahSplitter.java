@@ -21,8 +21,6 @@ final class SahSplitter {
     /** Offsets in a summary of the box's minimum and maximum corners, and of the centroids' box's. */
     static final int MIN = 0, MAX = 4, CENTROID_MIN = 8, CENTROID_MAX = 12;
 
-    private static final PrimitiveBinning BINNING = PrimitiveBinning.SELECTED;
-
     private final float[] boxes;
     private final int[] index;
     private final int maxLeafSize;
@@ -194,9 +192,10 @@ final class SahSplitter {
         int left = childrenAt(depth), right = left + SUMMARY;
         // Each side starts as a copy of its first bin: cheaper than resetting it, on the many small nodes.
         System.arraycopy(binSummaries, SUMMARY * used[0], childSummaries, left, SUMMARY);
-        for (int u = 1; u <= bestUsed; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, left);
+        PrimitiveBinning binning = PrimitiveBinning.selected();
+        for (int u = 1; u <= bestUsed; u++) binning.merge(binSummaries, SUMMARY * used[u], childSummaries, left);
         System.arraycopy(binSummaries, SUMMARY * used[bestUsed + 1], childSummaries, right, SUMMARY);
-        for (int u = bestUsed + 2; u < n; u++) BINNING.merge(binSummaries, SUMMARY * used[u], childSummaries, right);
+        for (int u = bestUsed + 2; u < n; u++) binning.merge(binSummaries, SUMMARY * used[u], childSummaries, right);
         // Each primitive to the side of its bin (recorded at its position), both sides in the order they were: the left
         // ones moved down in place, the right ones through a scratch array. Branch-free, and no load waits on the
         // previous primitive's store, as in a partition by swaps; and the order kept keeps runs of neighbours in the

@@ -29,7 +29,9 @@ import org.junit.jupiter.params.provider.MethodSource;
 class PrimitiveBinningTest {
     @Test
     void theVectorizedBinningRunsExactlyWhenTheModuleIsPresent() throws ReflectiveOperationException {
-        assertEquals(VectorSupport.available() ? "vector" : "scalar", PrimitiveBinning.SELECTED.name());
+        assertEquals(
+                VectorSupport.available() ? "vector" : "scalar",
+                PrimitiveBinning.selected().name());
     }
 
     static LongStream seeds() {
@@ -47,13 +49,13 @@ class PrimitiveBinningTest {
         int start = random.nextInt(n), end = start + 1 + random.nextInt(n - start);
         int axis = random.nextInt(3), size = 2 + random.nextInt(31);
         double[] whole = new double[SUMMARY];
-        PrimitiveBinning.SELECTED.summarize(boxes, index, start, end, whole, 0);
+        PrimitiveBinning.selected().summarize(boxes, index, start, end, whole, 0);
         double lo = whole[CENTROID_MIN + axis];
         double extent = whole[CENTROID_MAX + axis] - lo;
         double scale = extent > 0 ? size / extent : 1;
         SahBins bins = new SahBins(size);
         bins.clear(end - start);
-        PrimitiveBinning.SELECTED.bin(boxes, index, start, end, axis, lo, scale, bins);
+        PrimitiveBinning.selected().bin(boxes, index, start, end, axis, lo, scale, bins);
 
         int[] count = new int[size];
         double[] expected = new double[SUMMARY * size];
@@ -153,13 +155,13 @@ class PrimitiveBinningTest {
         summary[SUMMARY + MIN + 1] = Double.NEGATIVE_INFINITY;
         summary[SUMMARY + MAX + 1] = Double.POSITIVE_INFINITY;
         assertEquals(
-                PrimitiveBinning.SELECTED.name(),
+                PrimitiveBinning.selected().name(),
                 PrimitiveBinning.forBinning(4, summary, 0).name());
         assertEquals("scalar", PrimitiveBinning.forBinning(4, summary, SUMMARY).name());
         // Infinite on one side only: centroids there are infinite, not NaN, and any binning takes them.
         summary[SUMMARY + MAX + 1] = 1;
         assertEquals(
-                PrimitiveBinning.SELECTED.name(),
+                PrimitiveBinning.selected().name(),
                 PrimitiveBinning.forBinning(4, summary, SUMMARY).name());
     }
 
