@@ -24,14 +24,9 @@ class CancelOnSignalTest {
 
     @Test
     void sigtermCancelsTheRenderAndWritesNothing() throws Exception {
-        String java = ProcessHandle.current().info().command().orElse("java");
-        String classpath = System.getProperty("surefire.test.class.path", System.getProperty("java.class.path"));
         Path image = out.resolve("street.png");
-        Process process = new ProcessBuilder(
-                        java,
-                        "-cp",
-                        classpath,
-                        "cli.RaytracerCli",
+        Process process = CommandLineProcess.builder(
+                        List.of(),
                         "render",
                         "scenes/street.json",
                         "-o",

@@ -23,17 +23,9 @@ class VectorApiOnDemandTest {
 
     @Test
     void aSceneWithoutATreeRendersWithoutLoadingTheVectorApi() throws Exception {
-        String java = ProcessHandle.current().info().command().orElse("java");
-        String classpath = System.getProperty("surefire.test.class.path", System.getProperty("java.class.path"));
         Path log = out.resolve("classes.log");
-        Process process = new ProcessBuilder(
-                        java,
-                        "--add-modules",
-                        "jdk.incubator.vector",
-                        "-Xlog:class+load=info:file=" + log,
-                        "-cp",
-                        classpath,
-                        "cli.RaytracerCli",
+        Process process = CommandLineProcess.builder(
+                        List.of("--add-modules", "jdk.incubator.vector", "-Xlog:class+load=info:file=" + log),
                         "render",
                         "scenes/povray/soft-shadow.json",
                         "-o",
