@@ -423,6 +423,7 @@ int main(int argc, char **argv) {
     nodes = aligned_alloc(1 << 21, nodeBytes);
     madvise(nodes, nodeBytes, MADV_HUGEPAGE);
     memcpy(nodes + 4, raw, nodeFloats * 4);
+    free(raw);
     nodes += 4;
     triangles = load(dir, "triangles", NULL);
     info = load(dir, "info", NULL);

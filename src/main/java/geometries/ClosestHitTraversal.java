@@ -31,7 +31,7 @@ final class ClosestHitTraversal {
     /** See {@link CompiledPrimitives#searchesTree}. */
     private final boolean searchesTree;
 
-    /** The leaf filter, read only where leaves are filled (its class loads the Vector API, tens of ms in a new JVM). */
+    /** See {@link CompiledPrimitives#leafFilter}. */
     private final LeafFilter leafFilter;
 
     ClosestHitTraversal(CompiledPrimitives primitives, BVH bvh) {
@@ -43,7 +43,7 @@ final class ClosestHitTraversal {
         unbounded = primitives.unbounded;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
-        leafFilter = primitives.filtersLeaves ? LeafFilter.SELECTED : null;
+        leafFilter = primitives.leafFilter;
     }
 
     /** See {@link Accelerator#intersect}. */

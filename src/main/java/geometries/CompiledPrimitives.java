@@ -66,6 +66,12 @@ final class CompiledPrimitives {
     final boolean filtersLeaves;
 
     /**
+     * The filter of the filled leaves, or null where there are none: read only then, since its class loads the Vector
+     * API, tens of milliseconds in a new JVM that a scene of small meshes and shapes need not wait for.
+     */
+    final LeafFilter leafFilter;
+
+    /**
      * The flag, in a triangle's {@link #EDGES} entry, of a triangle of a filled leaf; above it its lane (2 bits) and
      * its leaf's count (3 bits), below it the shared-edge flags. So a filled triangle's entry is at least this, another
      * triangle's at most {@link WatertightTriangle#ALL_EDGES_SHARED}, an object's {@link #OBJECT}.
@@ -98,6 +104,7 @@ final class CompiledPrimitives {
         boundedCount = n;
         searchesTree = bvh != null && n > 1;
         filtersLeaves = searchesTree && filled.size() > 0;
+        leafFilter = filtersLeaves ? LeafFilter.SELECTED : null;
         // A vector's padding after the last leaf: the filter's loads of four lanes read past a leaf of fewer.
         triangles = new double[9 * n + (filtersLeaves ? LeafFilter.LANES : 0)];
         info = new int[INFO * n];

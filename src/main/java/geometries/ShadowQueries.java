@@ -40,7 +40,7 @@ final class ShadowQueries {
     /** See {@link Accelerator#testsShadowPackets}. */
     final boolean testsPackets;
 
-    /** The leaf filter, read only where leaves are filled (its class loads the Vector API, tens of ms in a new JVM). */
+    /** See {@link CompiledPrimitives#leafFilter}. */
     private final LeafFilter leafFilter;
 
     ShadowQueries(CompiledPrimitives primitives, BVH bvh) {
@@ -56,7 +56,7 @@ final class ShadowQueries {
         unboundedClear = primitives.unboundedClear;
         this.bvh = bvh;
         searchesTree = primitives.searchesTree;
-        leafFilter = primitives.filtersLeaves ? LeafFilter.SELECTED : null;
+        leafFilter = primitives.leafFilter;
         boolean objectsOnly = true;
         // Up to the first triangle (a mesh's is the first primitive: no pass over a million records).
         for (int k = 0; k < boundedCount && objectsOnly; k++) objectsOnly = info[INFO * k + EDGES] == OBJECT;

@@ -2,10 +2,9 @@ package geometries;
 
 import benchmark.BvhBenchmark;
 import benchmark.RaySets;
+import benchmark.RayThroughput;
 import benchmark.Workload;
 import java.io.IOException;
-import java.lang.management.ManagementFactory;
-import java.lang.management.ThreadMXBean;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
@@ -120,31 +119,30 @@ public final class KernelTwinExport {
         ByteBuffer info = buffer(4 * primitives.info.length);
         for (int i : primitives.info) info.putInt(i);
         write(dir.resolve("info"), info);
-        HitRecord hit = new HitRecord();
         for (int s = 0; s < sets.length; s++) {
             ByteBuffer rays = buffer(48 * sets[s].length), distances = buffer(8 * sets[s].length);
             for (Ray r : sets[s]) {
                 rays.putDouble(r.ox()).putDouble(r.oy()).putDouble(r.oz());
                 rays.putDouble(r.dx()).putDouble(r.dy()).putDouble(r.dz());
-                distances.putDouble(accelerator.intersect(r, 0, Double.POSITIVE_INFINITY, hit.reset()) ? hit.t : -1);
             }
+            // The twin marks a miss -1 (the benchmark's check, NaN).
+            for (double t : RayThroughput.distances(accelerator, sets[s]))
+                distances.putDouble(Double.isNaN(t) ? -1 : t);
             write(dir.resolve(names[s]), rays);
             write(dir.resolve(names[s] + ".t"), distances);
         }
     }
 
-    /** M rays per CPU-second of this thread: the median of {@code passes} passes after two untimed ones. */
+    /**
+     * M rays per CPU-second on one thread, as the benchmark times them ({@link RayThroughput#trace}): the median of
+     * {@code passes} passes after two untimed ones.
+     */
     static double speed(Accelerator accelerator, Ray[] rays, int passes) {
-        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-        HitRecord hit = new HitRecord();
-        long hits = 0;
         double[] speeds = new double[passes];
         for (int p = -2; p < passes; p++) {
-            long start = threads.getCurrentThreadCpuTime();
-            for (Ray r : rays) if (accelerator.intersect(r, 0, Double.POSITIVE_INFINITY, hit.reset())) hits++;
-            if (p >= 0) speeds[p] = rays.length / ((threads.getCurrentThreadCpuTime() - start) * 1e-9) / 1e6;
+            double cpuSeconds = RayThroughput.trace(accelerator, rays, 1).cpuSeconds();
+            if (p >= 0) speeds[p] = rays.length / cpuSeconds / 1e6;
         }
-        if (hits < 0) throw new AssertionError(); // keeps the loop's result alive
         Arrays.sort(speeds);
         return speeds[passes / 2];
     }
