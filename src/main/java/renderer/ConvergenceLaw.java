@@ -9,8 +9,9 @@ package renderer;
  * plan refined ended at 0.34-0.88 of the MSE the 1/n law had promised (alpha 1.34-1.53 in the first refining pass).
  * Planning with alpha = 1 there overshoots the target with samples it did not need. The first plan, with nothing
  * measured yet, assumes {@value #PRIOR}, below every first pass measured; each later plan fits alpha to what the
- * pass before it achieved, within [{@value #MIN}, {@value #MAX}]. A wrong exponent costs samples or a pass, never
- * honesty: the render stops on the measured estimate, not on the law.
+ * pass before it achieved, within [{@value #MIN}, {@value #MAX}]. A wrong exponent costs samples or a pass: the render
+ * stops on the measured estimates, which the law only carries from a pixel's neighbours to the pixel's own samples
+ * ({@link PassPlanner}'s prediction).
  */
 final class ConvergenceLaw {
     static final double PRIOR = 1.25, MIN = 1, MAX = 2;

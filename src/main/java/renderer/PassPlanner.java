@@ -25,7 +25,7 @@ final class PassPlanner {
     private final int minimum, maxSamples;
 
     /** Per-pixel arrays of the planning, reused from pass to pass and filled anew by each plan. */
-    private final double[] meanScratch, weightScratch;
+    private final double[] meanScratch, weightScratch, lawScratch;
     /** The 3 x 3 filters the planning applies to the variances. */
     private final Neighbourhoods neighbourhoods;
     /** The last predicted image MSE, and the samples taken when it was predicted (-1: none yet). */
@@ -48,15 +48,16 @@ final class PassPlanner {
         int n = nX * nY;
         meanScratch = new double[n];
         weightScratch = new double[n];
+        lawScratch = new double[n];
         neighbourhoods = new Neighbourhoods(nX, nY);
         law = new ConvergenceLaw(n);
     }
 
     /**
-     * The predicted RMSE of the image against the converged one, on the 0..255 scale: per pixel, the variance of one
-     * sample averaged over its 3 x 3 neighbourhood, over the pixel's samples. (The pixel's own estimate alone is
-     * biased low once it has decided the pixel's samples: pixels whose few samples agreed by chance stop early and
-     * keep their estimate of zero.)
+     * The predicted RMSE of the image against the converged one, on the 0..255 scale: per pixel, the MSEs of its 3 x 3
+     * neighbourhood, each carried to the pixel's own samples by the convergence law, averaged. (The pixel's own
+     * estimate alone is biased low once it has decided the pixel's samples: pixels whose few samples agreed by chance
+     * stop early and keep their estimate of zero.)
      */
     double predictedError() {
         if (samples() != samplesPredicted) {
@@ -66,15 +67,25 @@ final class PassPlanner {
     }
 
     /**
-     * Each pixel's predicted MSE, the neighbourhood's variance of one sample over the pixel's samples (in a reused
-     * array), and their mean, the image's, into {@link #predictedMse} for the samples taken so far; {@code largest}
-     * holds the neighbourhoods' largest variances.
+     * Each pixel's predicted MSE (in a reused array), and their mean, the image's, into {@link #predictedMse} for the
+     * samples taken so far; {@code largest} holds the neighbourhoods' largest variances. A neighbour's MSE at its
+     * samples n is carried to the pixel's m as the law says, times {@code (n / m)^alpha}: where a pass refined the
+     * neighbours of an edge and not the pixel beside them, their estimates would otherwise promise the pixel the error
+     * of their samples. (Until 27 Nov it was carried as {@code n / m}, the law of independent samples; the predictions
+     * of the accuracy report's target-error renders were up to 17% below their measured errors, and are now within 10%:
+     * docs/ACCURACY.md.)
      */
     private double[] pixelMse(double[] variance, double[] largest) {
-        double[] mse = neighbourhoods.mean(variance, largest, meanScratch);
+        double[] inversePowers = law.inversePowers(mostDone());
+        // Per pixel, its MSE times its samples to the power alpha: the same for every sample count, by the law.
+        double[] scaled = lawScratch;
+        for (int q = 0; q < scaled.length; q++) {
+            scaled[q] = variance[q] == 0 ? 0 : variance[q] / (2.0 * done[q]) / inversePowers[done[q]];
+        }
+        double[] mse = neighbourhoods.mean(scaled, largest, meanScratch);
         double total = 0;
         for (int p = 0; p < mse.length; p++) {
-            mse[p] /= 2.0 * done[p];
+            mse[p] *= inversePowers[done[p]];
             total += mse[p];
         }
         predictedMse = total / mse.length;
@@ -147,9 +158,14 @@ final class PassPlanner {
 
     /** The most samples per half any pixel may reach in the coming pass. */
     private int largestHalfGoal() {
+        return (int) Math.min(maxSamples / 2, (long) GROWTH * mostDone());
+    }
+
+    /** The most samples per half any pixel has. */
+    private int mostDone() {
         int most = 0;
         for (int d : done) most = Math.max(most, d);
-        return (int) Math.min(maxSamples / 2, (long) GROWTH * most);
+        return most;
     }
 
     /**
