@@ -103,6 +103,7 @@ final class ProgressiveSampler {
             long taken = samples() - before;
             if (taken > 0) perSample = (System.nanoTime() - passStart) * 1e-9 / taken;
         }
+        if (budget > 0) planner.fitLaw();
     }
 
     /** What the render predicted and spent. */

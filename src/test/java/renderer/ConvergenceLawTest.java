@@ -38,6 +38,31 @@ class ConvergenceLawTest {
         assertEquals(alpha, law.alpha(), 1.0 / 128);
     }
 
+    /** The same from every k-th refined pixel: the fit at a time budget's end reads at most a few thousand. */
+    @ParameterizedTest(name = "alpha {0}")
+    @MethodSource("exponents")
+    void fitsTheExponentFromEveryKthRefinedPixel(double alpha) {
+        SplittableRandom random = new SplittableRandom(11);
+        double[] mse = new double[PIXELS];
+        int[] done = new int[PIXELS];
+        for (int p = 0; p < PIXELS; p++) {
+            mse[p] = random.nextDouble() * 10;
+            done[p] = 1 + random.nextInt(4);
+        }
+        ConvergenceLaw law = new ConvergenceLaw(PIXELS);
+        law.remember(mse, done);
+        // 2,730 pixels refined, the fit asked to read 100: every 28th in image order, 98 of them. Only those follow the
+        // law; the others fall as 1/n, and read with them they would pull alpha toward 1.
+        for (int p = 0, refined = 0; p < PIXELS; p++) {
+            if (p % 3 == 0) continue;
+            int now = done[p] * (2 + random.nextInt(7));
+            mse[p] *= Math.pow((double) done[p] / now, refined++ % 28 == 0 ? alpha : 1.0);
+            done[p] = now;
+        }
+        law.fit(mse, done, 100);
+        assertEquals(alpha, law.alpha(), 1.0 / 128);
+    }
+
     @Test
     void staysWithinItsBoundsAndKeepsThePriorUntilAPassSaysMore() {
         ConvergenceLaw law = new ConvergenceLaw(PIXELS);
