@@ -209,17 +209,73 @@ final class PassPlanner {
             }
             return planned;
         }
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
         // The law's record of this plan, for the printed prediction (fitLaw); the plan itself does not use the law.
-        law.remember(pixelMse(variance, neighbourhoods.largest(variance, weightScratch)), done);
-        double[] weight = budgetWeights();
+        law.remember(pixelMse(variance, largest), done);
+        double[] weight = budgetWeights(largest);
         // The most samples that do not exceed the budget.
-        return setGoals(weight, search(lambda -> extra(weight, lambda) >= budget)[0]);
+        return setGoals(weight, budgetFactor(weight, budget));
+    }
+
+    /**
+     * The largest allocation factor whose plan adds fewer than {@code budget} samples, to a thousandth (the lower end of
+     * {@link #search}'s interval), by regula falsi on the samples added (the Illinois variant), from a guess that ignores
+     * the pixels' floors and ceilings: the samples grow nearly in proportion to the factor, so it took 4-12 sums over
+     * the image on the accuracy report's budgets, where halving took about 25 (docs/ACCURACY.md, 27 Nov). A step that
+     * does not halve the interval is followed by a halving, so it never takes many more than halving would.
+     */
+    private double budgetFactor(double[] weight, long budget) {
+        if (countedExtra(weight, Double.POSITIVE_INFINITY) < budget) return Double.POSITIVE_INFINITY;
+        double weights = 0, done2 = 0;
+        for (int p = 0; p < weight.length; p++) {
+            weights += weight[p];
+            done2 += 2.0 * done[p];
+        }
+        double lo = 0, hi = (budget + done2) / weights;
+        double below = -budget, above = countedExtra(weight, hi) - budget;
+        while (above < 0) {
+            lo = hi;
+            below = above;
+            hi *= 2;
+            above = countedExtra(weight, hi) - budget;
+        }
+        int kept = 0; // +1: the upper end moved last, -1: the lower end
+        boolean halve = false;
+        // Done when the factors are a thousandth apart, as the search's are, or the plan is within a thousandth of the
+        // budget in samples.
+        while (hi - lo > 1e-3 * hi && -below > 1e-3 * budget) {
+            double width = hi - lo;
+            double x;
+            if (halve) x = (lo + hi) / 2;
+            else if (above <= 1e-3 * budget) x = hi * (1 - 0.999e-3); // the upper end is as good: just below it
+            else x = hi - above * (hi - lo) / (above - below);
+            if (!(x > lo && x < hi)) x = (lo + hi) / 2;
+            double f = countedExtra(weight, x) - budget;
+            if (f >= 0) {
+                hi = x;
+                above = f;
+                if (kept == 1) below /= 2;
+                kept = 1;
+            } else {
+                lo = x;
+                below = f;
+                if (kept == -1) above /= 2;
+                kept = -1;
+            }
+            halve = !halve && hi - lo > width / 2;
+        }
+        return lo;
+    }
+
+    private long countedExtra(double[] weight, double lambda) {
+        searchSteps++;
+        return extra(weight, lambda);
     }
 
     /**
      * A time budget's share of new samples per pixel: the fourth root of its variance of one sample, the larger of its
-     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (in the array of the
-     * neighbourhoods' largest variances). Not the target's {@link #weights}, the square root of the neighbourhood's
+     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (written over
+     * {@code largest}, the neighbourhoods' largest variances). Not the target's {@link #weights}, the square root of the neighbourhood's
      * largest: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best
      * share grows more slowly than its standard deviation; a pixel's estimate is noisy, and a root damps those that
      * drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three pixels
@@ -227,8 +283,7 @@ final class PassPlanner {
      * experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
      * estimates, and took about as many samples with these.
      */
-    private double[] budgetWeights() {
-        double[] largest = neighbourhoods.largest(variance, weightScratch);
+    private double[] budgetWeights(double[] largest) {
         double[] mean = neighbourhoods.mean(variance, largest, meanScratch);
         double[] weight = largest;
         for (int p = 0; p < weight.length; p++) weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));

@@ -52,6 +52,21 @@ class BudgetPlanTest {
     }
 
     @Test
+    void aBudgetsPlanComesCloseToItsSamplesInAFewSums() {
+        ProgressiveSampler sampler = afterFirstPass(ProgressiveSettings.timeBudget(10)); // minimum 8: 4 per half
+        assertEquals(4L * NX * NY, sampler.planner.planForSamples(1_000_000));
+        TraceContext ctx = new TraceContext();
+        for (int y = 0; y < NY; y++) for (int x = 0; x < NX; x++) sampler.advance(x, y, ctx);
+
+        long before = sampler.planner.searchSteps, budget = 40L * NX * NY;
+        long planned = sampler.planner.planForSamples(budget);
+        long steps = sampler.planner.searchSteps - before;
+        assertTrue(planned < budget && planned > 0.95 * budget, planned + " samples planned for " + budget);
+        // Halving the factor took 19 sums over the image for the same plan.
+        assertTrue(steps <= 10, "the plan's search tried " + steps + " factors");
+    }
+
+    @Test
     void aBudgetBeyondEveryPixelsMaximumPlansNothingInAFewSteps() {
         // Minimum and maximum 16: after the pass to the minimum every pixel is at its maximum.
         ProgressiveSampler sampler =
