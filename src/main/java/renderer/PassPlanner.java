@@ -96,12 +96,12 @@ final class PassPlanner {
     }
 
     /**
-     * Fits the convergence law to the pass since the last plan, for the prediction: a time budget's plans do not use the
-     * law, so it keeps its prior exponent until this is called at the render's end. The refined pixels' own estimates
-     * now are set against what the plan predicted for them: the prediction now would carry the neighbours' estimates by
-     * the exponent being fitted, and a law steeper than the prior then fitted steeper still (alpha 2 for 1.7 in
-     * {@code PredictedErrorTest}). On the accuracy report's budgets the printed predictions were, in the median, 0.71-0.91
-     * of the measured error with the prior, and 0.76-0.97 with this (docs/ACCURACY.md, 27 Nov).
+     * Fits the convergence law to the pass since the last plan, for the prediction: a time budget's plans do not use
+     * the law, so it keeps its prior exponent until this is called at the render's end. The refined pixels' own
+     * estimates now are set against what the plan predicted for them: the prediction now would carry the neighbours'
+     * estimates by the exponent being fitted, and a law steeper than the prior then fitted steeper still (alpha 2 for
+     * 1.7 in {@code PredictedErrorTest}). On the accuracy report's budgets the printed predictions were, in the median,
+     * 0.71-0.91 of the measured error with the prior, and 0.76-0.97 with this (docs/ACCURACY.md, 27 Nov).
      */
     void fitLaw() {
         double[] own = lawScratch;
@@ -218,11 +218,11 @@ final class PassPlanner {
     }
 
     /**
-     * The largest allocation factor whose plan adds fewer than {@code budget} samples, to a thousandth (the lower end of
-     * {@link #search}'s interval), by regula falsi on the samples added (the Illinois variant), from a guess that ignores
-     * the pixels' floors and ceilings: the samples grow nearly in proportion to the factor, so it took 4-12 sums over
-     * the image on the accuracy report's budgets, where halving took about 25 (docs/ACCURACY.md, 27 Nov). A step that
-     * does not halve the interval is followed by a halving, so it never takes many more than halving would.
+     * The largest allocation factor whose plan adds fewer than {@code budget} samples, to a thousandth (the lower end
+     * of {@link #search}'s interval), by regula falsi on the samples added (the Illinois variant), from a guess that
+     * ignores the pixels' floors and ceilings: the samples grow nearly in proportion to the factor, so it took 4-12
+     * sums over the image on the accuracy report's budgets, where halving took about 25 (docs/ACCURACY.md, 27 Nov). A
+     * step that does not halve the interval is followed by a halving, so it never takes many more than halving would.
      */
     private double budgetFactor(double[] weight, long budget) {
         if (countedExtra(weight, Double.POSITIVE_INFINITY) < budget) return Double.POSITIVE_INFINITY;
@@ -274,13 +274,13 @@ final class PassPlanner {
 
     /**
      * A time budget's share of new samples per pixel: the fourth root of its variance of one sample, the larger of its
-     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (written over
-     * {@code largest}, the neighbourhoods' largest variances). Not the target's {@link #weights}, the square root of the neighbourhood's
-     * largest: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best
-     * share grows more slowly than its standard deviation; a pixel's estimate is noisy, and a root damps those that
-     * drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three pixels
-     * wide, where its mean keeps what the pixel's own estimate missed. At equal samples, 0-7% less error on every
-     * experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
+     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (written over the
+     * neighbourhoods' largest variances, {@code largest}). Not the target's {@link #weights}, the square root of the
+     * neighbourhood's largest: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}),
+     * so its best share grows more slowly than its standard deviation; a pixel's estimate is noisy, and a root damps
+     * those that drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three
+     * pixels wide, where its mean keeps what the pixel's own estimate missed. At equal samples, 0-7% less error on
+     * every experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
      * estimates, and took about as many samples with these.
      */
     private double[] budgetWeights(double[] largest) {
