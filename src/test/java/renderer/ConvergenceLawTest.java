@@ -3,6 +3,7 @@ package renderer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.SplittableRandom;
+import java.util.function.IntToDoubleFunction;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -19,21 +20,9 @@ class ConvergenceLawTest {
     @ParameterizedTest(name = "alpha {0}")
     @MethodSource("exponents")
     void fitsTheExponentThePassAchieved(double alpha) {
-        SplittableRandom random = new SplittableRandom(7);
         double[] mse = new double[PIXELS];
         int[] done = new int[PIXELS];
-        for (int p = 0; p < PIXELS; p++) {
-            mse[p] = random.nextDouble() * 10;
-            done[p] = 1 + random.nextInt(4);
-        }
-        ConvergenceLaw law = new ConvergenceLaw(PIXELS);
-        law.remember(mse, done);
-        for (int p = 0; p < PIXELS; p++) {
-            if (p % 3 == 0) continue; // not refined: left out of the fit
-            int now = done[p] * (2 + random.nextInt(7));
-            mse[p] *= Math.pow((double) done[p] / now, alpha);
-            done[p] = now;
-        }
+        ConvergenceLaw law = planAndRefine(mse, done, refined -> alpha);
         law.fit(mse, done);
         assertEquals(alpha, law.alpha(), 1.0 / 128);
     }
@@ -42,25 +31,35 @@ class ConvergenceLawTest {
     @ParameterizedTest(name = "alpha {0}")
     @MethodSource("exponents")
     void fitsTheExponentFromEveryKthRefinedPixel(double alpha) {
-        SplittableRandom random = new SplittableRandom(11);
         double[] mse = new double[PIXELS];
         int[] done = new int[PIXELS];
+        // 2,730 pixels refined, the fit asked to read 100: every 28th in image order, 98 of them. Only those follow the
+        // law; the others fall as 1/n, and read with them they would pull alpha toward 1.
+        ConvergenceLaw law = planAndRefine(mse, done, refined -> refined % 28 == 0 ? alpha : 1.0);
+        law.fit(mse, done, 100);
+        assertEquals(alpha, law.alpha(), 1.0 / 128);
+    }
+
+    /**
+     * A law that remembered a plan over random MSEs and counts, after a pass that refined two pixels in three (the
+     * others are left out of a fit), the k-th of them falling as n^-{@code exponent(k)}; the pass's MSEs and counts in
+     * {@code mse} and {@code done}.
+     */
+    private static ConvergenceLaw planAndRefine(double[] mse, int[] done, IntToDoubleFunction exponent) {
+        SplittableRandom random = new SplittableRandom(7);
         for (int p = 0; p < PIXELS; p++) {
             mse[p] = random.nextDouble() * 10;
             done[p] = 1 + random.nextInt(4);
         }
         ConvergenceLaw law = new ConvergenceLaw(PIXELS);
         law.remember(mse, done);
-        // 2,730 pixels refined, the fit asked to read 100: every 28th in image order, 98 of them. Only those follow the
-        // law; the others fall as 1/n, and read with them they would pull alpha toward 1.
         for (int p = 0, refined = 0; p < PIXELS; p++) {
             if (p % 3 == 0) continue;
             int now = done[p] * (2 + random.nextInt(7));
-            mse[p] *= Math.pow((double) done[p] / now, refined++ % 28 == 0 ? alpha : 1.0);
+            mse[p] *= Math.pow((double) done[p] / now, exponent.applyAsDouble(refined++));
             done[p] = now;
         }
-        law.fit(mse, done, 100);
-        assertEquals(alpha, law.alpha(), 1.0 / 128);
+        return law;
     }
 
     @Test
