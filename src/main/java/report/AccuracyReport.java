@@ -198,6 +198,9 @@ public final class AccuracyReport {
             ImageWriter reference = referenceCamera.getImage();
             double referenceSeconds = referenceCamera.getLastStatistics().wallSeconds();
             writePng(folder.resolve(experiment.slug() + "-reference.png"), reference.toBufferedImage());
+            double referenceError = ReferenceError.estimate(experiment, w, h, reference);
+            log.printf(
+                    Locale.ROOT, "  reference: %.2f s, its own error about %.3f%n", referenceSeconds, referenceError);
             experiment.camera(experiment.variants().get(0), counts[1], w, h).renderImage(); // warm-up
             Map<String, List<Measurement>> byVariant = new LinkedHashMap<>();
             List<Variant> variants = experiment.variants();
@@ -245,9 +248,16 @@ public final class AccuracyReport {
             writePng(
                     options.out().resolve("accuracy-" + experiment.slug() + "-crops.png"),
                     Crops.grid(variants.stream().map(Variant::label).toList(), columns, crops, experiment.crop()));
-            markdown.append(section(experiment, byVariant, referenceSeconds, w, h));
+            markdown.append(section(experiment, byVariant, referenceSeconds, referenceError, w, h));
             List<ProgressiveCheck.Row> checks = ProgressiveCheck.run(
-                    experiment, reference, w, h, PROGRESSIVE_TARGETS, budgets(byVariant), options.repeats());
+                    experiment,
+                    reference,
+                    referenceError,
+                    w,
+                    h,
+                    PROGRESSIVE_TARGETS,
+                    budgets(byVariant),
+                    options.repeats());
             for (ProgressiveCheck.Row r : checks) {
                 log.printf(
                         Locale.ROOT,
@@ -316,17 +326,20 @@ public final class AccuracyReport {
             Experiment experiment,
             Map<String, List<Measurement>> byVariant,
             double referenceSeconds,
+            double referenceError,
             int width,
             int height) {
         StringBuilder s = new StringBuilder();
         s.append(String.format(
                 Locale.ROOT,
-                "%n## %s (%s)%n%n%d x %d pixels. Reference: %.2f s.%n%n",
+                "%n## %s (%s)%n%n%d x %d pixels. Reference: %.2f s; its own RMSE about %.3f (a second reference with"
+                        + " another seed differs from it by sqrt 2 times that), part of every error below.%n%n",
                 experiment.name(),
                 experiment.sampleUnit(),
                 width,
                 height,
-                referenceSeconds));
+                referenceSeconds,
+                referenceError));
         if (!experiment.description().isEmpty())
             s.append(experiment.description()).append("\n\n");
         s.append("| variant | samples | time (s) | rays | RMSE | p99 |\n|---|---:|---:|---:|---:|---:|\n");

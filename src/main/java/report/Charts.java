@@ -44,26 +44,28 @@ final class Charts {
     }
 
     /**
-     * The error each progressive render predicted against the error measured, one series per experiment, with the
-     * line where they are equal: points below it predicted too little.
+     * The error each progressive render predicted against the error measured less the reference's own (what the
+     * prediction estimates), one series per experiment, with the line where they are equal: points below it predicted
+     * too little. A render whose measured error is all the reference's is left out (the axes are logarithmic).
      */
     static BufferedImage predictedVersusMeasured(List<ProgressiveCheck.Row> rows) {
         XYChart chart = chart(
                 "Progressive sampling: predicted vs measured RMSE",
-                "measured RMSE (of 255)",
+                "measured RMSE less the reference's own (of 255)",
                 "predicted RMSE (of 255)");
         double lo = Double.POSITIVE_INFINITY, hi = 0;
         Map<String, List<ProgressiveCheck.Row>> byExperiment = new java.util.LinkedHashMap<>();
         for (ProgressiveCheck.Row r : rows) {
+            if (!(r.measuredLessReference() > 0)) continue;
             byExperiment
                     .computeIfAbsent(r.experiment(), k -> new java.util.ArrayList<>())
                     .add(r);
-            lo = Math.min(lo, Math.min(r.measured(), r.predicted()));
-            hi = Math.max(hi, Math.max(r.measured(), r.predicted()));
+            lo = Math.min(lo, Math.min(r.measuredLessReference(), r.predicted()));
+            hi = Math.max(hi, Math.max(r.measuredLessReference(), r.predicted()));
         }
         for (Map.Entry<String, List<ProgressiveCheck.Row>> e : byExperiment.entrySet()) {
             double[] measured = e.getValue().stream()
-                    .mapToDouble(ProgressiveCheck.Row::measured)
+                    .mapToDouble(ProgressiveCheck.Row::measuredLessReference)
                     .toArray();
             double[] predicted = e.getValue().stream()
                     .mapToDouble(ProgressiveCheck.Row::predicted)

@@ -31,6 +31,14 @@ class AccuracyReportTest {
         }
         String report = Files.readString(out.resolve("accuracy").resolve("report.md"));
         assertTrue(report.contains("## anti-aliasing") && report.contains("## soft shadows"), report);
+        // Each reference's own error, estimated from a second reference: above zero (a seed changes jittered samples).
+        java.util.regex.Matcher own =
+                java.util.regex.Pattern.compile("its own RMSE about ([0-9.]+)").matcher(report);
+        for (int section = 0; section < 2; section++) {
+            assertTrue(own.find(), "the reference's own error in each section");
+            assertTrue(Double.parseDouble(own.group(1)) > 0, own.group());
+        }
+        assertTrue(report.contains("| less the reference's own |"), "the progressive table's column");
         for (Measurement m : all) {
             assertTrue(m.seconds() > 0 && m.rmse() >= 0 && m.p99() >= 0, m.toString());
             if (m.samples() == 16 && m.variant().equals("jittered")) {

@@ -11,7 +11,19 @@ class ProgressiveCheckTest {
 
     private static ProgressiveCheck.Row row(double target, double budget, double measured, double seconds, long n) {
         return new ProgressiveCheck.Row(
-                "shadows", "asked", target, budget, measured * 0.9, measured, measured, measured, 1, seconds, n, 2.5);
+                "shadows",
+                "asked",
+                target,
+                budget,
+                measured * 0.9,
+                measured,
+                measured,
+                measured,
+                1,
+                seconds,
+                n,
+                2.5,
+                0.6);
     }
 
     @Test
@@ -29,6 +41,7 @@ class ProgressiveCheckTest {
         assertEquals(3.1, m.highest());
         assertEquals(3, m.renders());
         assertEquals("1.900-3.100 (3 renders)", ProgressiveCheck.range(m));
+        assertEquals(Math.sqrt(2.4 * 2.4 - 0.6 * 0.6), m.measuredLessReference(), 1e-12, "the reference's error kept");
     }
 
     @Test
@@ -39,6 +52,12 @@ class ProgressiveCheckTest {
         assertEquals(0.12, m.seconds());
         assertEquals(2.05, m.measured());
         assertFalse(m.failed(), "2.05 is within 25% of 2");
+    }
+
+    @Test
+    void theReferencesOwnErrorIsTakenOutInSquares() {
+        assertEquals(4, ReferenceError.without(5, 3), 1e-12);
+        assertEquals(0, ReferenceError.without(0.5, 0.6), "a measured error below the reference's own is all of it");
     }
 
     @Test
