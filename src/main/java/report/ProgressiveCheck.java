@@ -130,7 +130,10 @@ final class ProgressiveCheck {
                 m.referenceError());
     }
 
-    /** What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time. */
+    /**
+     * What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time; with the
+     * reference's own RMSE, which every row carries.
+     */
     private record Request(ProgressiveSettings settings, double fixedRmse, double referenceError) {}
 
     private static Row render(Experiment experiment, ImageWriter reference, int width, int height, Request request) {

@@ -9,12 +9,15 @@ import scene.Scene;
  * error measured against it (in squares: the two are independent). A second reference, rendered the same way with
  * another scene seed, differs from the first by about sqrt 2 times that error. Taken out of a measured error, what is
  * left estimates the error against the true image, which is what a progressive render predicts: the street's
- * reference, at 256 camera rays and 16 shadow rays per lamp, is off by about 0.54, as much as a 5 s budget's own error.
+ * reference, at 256 camera rays and 16 shadow rays per lamp, is off by about 0.55, as much as a 5 s budget's own error.
  */
 final class ReferenceError {
     private ReferenceError() {}
 
-    /** Renders the experiment's reference again with another seed and returns its RMSE against {@code reference}. */
+    /**
+     * The own RMSE of {@code reference}, the experiment's reference at this size: the experiment's reference rendered
+     * again with another seed, its RMSE against {@code reference}, over sqrt 2.
+     */
     static double estimate(Experiment experiment, int width, int height, ImageWriter reference) {
         Camera second = experiment.reference(width, height);
         Scene scene = second.getRayTracer().getScene();
