@@ -194,11 +194,10 @@ public final class AccuracyReport {
             int w = size[0], h = size[1];
             int[] counts = experiment.counts(options.counts());
             log.println("== " + experiment.name() + " (" + w + " x " + h + ")");
-            Camera referenceCamera = experiment.reference(w, h).renderImage();
-            ImageWriter reference = referenceCamera.getImage();
-            double referenceSeconds = referenceCamera.getLastStatistics().wallSeconds();
+            Reference rendered = Reference.render(experiment, w, h);
+            ImageWriter reference = rendered.image();
+            double referenceSeconds = rendered.seconds(), referenceError = rendered.ownError();
             writePng(folder.resolve(experiment.slug() + "-reference.png"), reference.toBufferedImage());
-            double referenceError = ReferenceError.estimate(experiment, w, h, reference);
             log.printf(
                     Locale.ROOT, "  reference: %.2f s, its own error about %.3f%n", referenceSeconds, referenceError);
             experiment.camera(experiment.variants().get(0), counts[1], w, h).renderImage(); // warm-up
@@ -332,8 +331,8 @@ public final class AccuracyReport {
         StringBuilder s = new StringBuilder();
         s.append(String.format(
                 Locale.ROOT,
-                "%n## %s (%s)%n%n%d x %d pixels. Reference: %.2f s; its own RMSE about %.3f (a second reference with"
-                        + " another seed differs from it by sqrt 2 times that), part of every error below.%n%n",
+                "%n## %s (%s)%n%n%d x %d pixels. Reference: the mean of two renders with different seeds, %.2f s;"
+                        + " its own RMSE about %.3f (half the two renders' difference), part of every error below.%n%n",
                 experiment.name(),
                 experiment.sampleUnit(),
                 width,

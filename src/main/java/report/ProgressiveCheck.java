@@ -35,7 +35,7 @@ final class ProgressiveCheck {
      * @param seconds the render's wall time
      * @param samples the camera samples it took
      * @param fixedRmse for a budget: the RMSE of the fixed HALTON render whose time set the budget, else 0
-     * @param referenceError the reference's own RMSE ({@link ReferenceError}), part of every measured one
+     * @param referenceError the reference's own RMSE ({@link Reference}), part of every measured one
      */
     record Row(
             String experiment,
@@ -61,7 +61,7 @@ final class ProgressiveCheck {
 
         /** The measured RMSE less the reference's own: an estimate of the error against the true image. */
         double measuredLessReference() {
-            return ReferenceError.without(measured, referenceError);
+            return Reference.without(measured, referenceError);
         }
     }
 

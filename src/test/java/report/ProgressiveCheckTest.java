@@ -55,12 +55,6 @@ class ProgressiveCheckTest {
     }
 
     @Test
-    void theReferencesOwnErrorIsTakenOutInSquares() {
-        assertEquals(4, ReferenceError.without(5, 3), 1e-12);
-        assertEquals(0, ReferenceError.without(0.5, 0.6), "a measured error below the reference's own is all of it");
-    }
-
-    @Test
     void oneRenderIsItsOwnRow() {
         ProgressiveCheck.Row one = row(0, 1.4, 0.77, 1.39, 657_306);
         ProgressiveCheck.Row m = ProgressiveCheck.median(List.of(one));
