@@ -46,25 +46,20 @@ final class ConvergenceLaw {
      * includes that, as the next plan will meet it too.
      */
     void fit(double[] mse, int[] done) {
-        fit(mse, done, Integer.MAX_VALUE);
-    }
-
-    /**
-     * As {@link #fit(double[], int[])}, from at most about {@code most} of the refined pixels, every k-th in image
-     * order: each costs a few exponentials, and a fit that runs after a time budget's end must be quick on any image.
-     */
-    void fit(double[] mse, int[] done, int most) {
         if (!planned) return;
+        double measured = 0;
         int refined = 0;
-        for (int p = 0; p < done.length; p++) if (done[p] > plannedDone[p]) refined++;
+        for (int p = 0; p < done.length; p++) {
+            if (done[p] > plannedDone[p]) {
+                measured += mse[p];
+                refined++;
+            }
+        }
         // A pass that refined only a few pixels says little about the law (its last steps toward the target).
         if (refined < Math.max(MIN_REFINED, done.length / 256)) return;
-        int stride = 1 + (refined - 1) / most, used = 1 + (refined - 1) / stride; // (both rounded up)
-        double measured = 0;
-        double[] logRatio = new double[used], before = new double[used];
-        for (int p = 0, seen = 0, k = 0; p < done.length; p++) {
-            if (done[p] > plannedDone[p] && seen++ % stride == 0) {
-                measured += mse[p];
+        double[] logRatio = new double[refined], before = new double[refined];
+        for (int p = 0, k = 0; p < done.length; p++) {
+            if (done[p] > plannedDone[p]) {
                 logRatio[k] = Math.log((double) plannedDone[p] / done[p]);
                 before[k++] = plannedMse[p];
             }

@@ -47,20 +47,32 @@ final class Neighbourhoods {
      * Elsewhere the neighbourhood is summed row by row, left to right.
      */
     double[] mean(double[] values, double[] largest, double[] out) {
+        return mean(values, largest, out, true);
+    }
+
+    /**
+     * As {@link #mean}, without the pixel itself: the mean of its 8 neighbours (fewer at the image's edges; 0 for an
+     * image of one pixel).
+     */
+    double[] meanOfOthers(double[] values, double[] largest, double[] out) {
+        return mean(values, largest, out, false);
+    }
+
+    private double[] mean(double[] values, double[] largest, double[] out, boolean withSelf) {
         for (int y = 0; y < nY; y++) {
             int j0 = Math.max(0, y - 1), j1 = Math.min(nY - 1, y + 1);
             for (int x = 0; x < nX; x++) {
-                int p = y * nX + x;
-                if (largest[p] == 0) {
+                int p = y * nX + x, i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
+                int count = (j1 - j0 + 1) * (i1 - i0 + 1) - (withSelf ? 0 : 1);
+                if (largest[p] == 0 || count == 0) {
                     out[p] = 0;
                     continue;
                 }
-                int i0 = Math.max(0, x - 1), i1 = Math.min(nX - 1, x + 1);
                 double sum = 0;
                 for (int j = j0; j <= j1; j++) {
-                    for (int i = i0; i <= i1; i++) sum += values[j * nX + i];
+                    for (int i = i0; i <= i1; i++) if (withSelf || j * nX + i != p) sum += values[j * nX + i];
                 }
-                out[p] = sum / ((j1 - j0 + 1) * (i1 - i0 + 1));
+                out[p] = sum / count;
             }
         }
         return out;

@@ -10,15 +10,14 @@ import java.util.function.DoublePredicate;
  *
  * <p>A target's plan weighs pixels by the neighbourhood's largest variance, and assumes each pixel's MSE falls as
  * {@code n^-alpha}, alpha fitted to the passes so far ({@link ConvergenceLaw}); a time budget's plan weighs them by the
- * fourth root of their own estimate or the neighbourhood's mean ({@link #budgetWeights}).
+ * fourth root of their neighbours' mean estimate, without their own ({@link #budgetWeights}), and predicts from the
+ * pixels' own estimates.
  */
 final class PassPlanner {
     /** A pass may multiply a pixel's samples by at most this: estimates are checked again before going further. */
     private static final int GROWTH = 8;
     /** The share of the target's MSE a plan aims at. */
     private static final double LANDING = 0.97;
-    /** The most pixels the fit at a time budget's end reads (about 0.5 ms of exponentials). */
-    private static final int FINAL_FIT_PIXELS = 4096;
     /** The sampler's arrays: per pixel, samples per half so far and the goal of the coming pass, and its variance. */
     private final int[] done, goal;
 
@@ -40,8 +39,20 @@ final class PassPlanner {
     /** How the pixels' errors fall with their samples, fitted pass by pass. */
     private final ConvergenceLaw law;
 
-    /** Plans for the sampler's arrays, which it fills; {@code nX} x {@code nY} pixels. */
-    PassPlanner(int[] done, int[] goal, double[] variance, int minimum, int maxSamples, int nX, int nY) {
+    /** Whether the plans spend a time budget: then each pixel's weight comes from its neighbours' estimates only. */
+    private final boolean timeBudget;
+
+    /** Plans for the sampler's arrays, which it fills; {@code nX} x {@code nY} pixels, toward a target or a budget. */
+    PassPlanner(
+            int[] done,
+            int[] goal,
+            double[] variance,
+            int minimum,
+            int maxSamples,
+            int nX,
+            int nY,
+            boolean timeBudget) {
+        this.timeBudget = timeBudget;
         this.done = done;
         this.goal = goal;
         this.variance = variance;
@@ -62,6 +73,7 @@ final class PassPlanner {
      * stop early and keep their estimate of zero.)
      */
     double predictedError() {
+        if (timeBudget) return Math.sqrt(ownMse());
         if (samples() != samplesPredicted) {
             pixelMse(variance, neighbourhoods.largest(variance, weightScratch));
         }
@@ -96,18 +108,15 @@ final class PassPlanner {
     }
 
     /**
-     * Fits the convergence law to the pass since the last plan, for the prediction: a time budget's plans do not use
-     * the law, so it keeps its prior exponent until this is called at the render's end. The refined pixels' own
-     * estimates now are set against what the plan predicted for them: the prediction now would carry the neighbours'
-     * estimates by the exponent being fitted, and a law steeper than the prior then fitted steeper still (alpha 2 for
-     * 1.7 in {@code PredictedErrorTest}). On the accuracy report's budgets the printed predictions were, in the median,
-     * 0.71-0.91 of the measured error with the prior, and 0.76-0.97 with this (docs/ACCURACY.md, 27 Nov).
+     * The image's MSE as the mean of the pixels' own estimates: a time budget's prediction. Its plans weigh each pixel
+     * by its neighbours' estimates only, and its first passes every pixel alike, so nothing chose a pixel's samples by
+     * its own, and each estimate is unbiased. (A target plans on the pixels' own estimates, which are then biased low,
+     * and predicts from its neighbourhoods.)
      */
-    void fitLaw() {
-        double[] own = lawScratch;
-        for (int p = 0; p < own.length; p++) own[p] = variance[p] / (2.0 * done[p]);
-        law.fit(own, done, FINAL_FIT_PIXELS);
-        samplesPredicted = -1;
+    private double ownMse() {
+        double sum = 0;
+        for (int p = 0; p < done.length; p++) sum += variance[p] / (2.0 * done[p]);
+        return sum / done.length;
     }
 
     /** Samples taken so far (both halves of every pixel). */
@@ -209,10 +218,7 @@ final class PassPlanner {
             }
             return planned;
         }
-        double[] largest = neighbourhoods.largest(variance, weightScratch);
-        // The law's record of this plan, for the printed prediction (fitLaw); the plan itself does not use the law.
-        law.remember(pixelMse(variance, largest), done);
-        double[] weight = budgetWeights(largest);
+        double[] weight = budgetWeights();
         // The most samples that do not exceed the budget.
         return setGoals(weight, budgetFactor(weight, budget));
     }
@@ -273,20 +279,19 @@ final class PassPlanner {
     }
 
     /**
-     * A time budget's share of new samples per pixel: the fourth root of its variance of one sample, the larger of its
-     * own estimate and its 3 x 3 neighbourhood's mean, plus a twentieth of the image's mean (written over the
-     * neighbourhoods' largest variances, {@code largest}). Not the target's {@link #weights}, the square root of the
-     * neighbourhood's largest: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}),
-     * so its best share grows more slowly than its standard deviation; a pixel's estimate is noisy, and a root damps
-     * those that drew a large one by chance; and the neighbourhood's largest spread an edge's weight over a band three
-     * pixels wide, where its mean keeps what the pixel's own estimate missed. At equal samples, 0-7% less error on
-     * every experiment of the accuracy report (docs/ACCURACY.md, 27 Nov). A target keeps its weights: it stops on its
-     * estimates, and took about as many samples with these.
+     * A time budget's share of new samples per pixel: the fourth root of the mean variance of one sample of its
+     * neighbours (the pixels of its 3 x 3 neighbourhood but itself), plus a twentieth of the image's mean (written over
+     * the array of the neighbourhoods' largest variances). Not the pixel's own estimate, so that its own, which nothing
+     * chose, predicts its error without bias ({@link #predictedError}): at the price of 2-3% of a budget's error in
+     * equal time, which its Sobol points win back (docs/ACCURACY.md, 27 Nov). The fourth root, not the target's square
+     * root: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best share
+     * grows more slowly than its standard deviation, and a root damps the estimates that came out large by chance.
      */
-    private double[] budgetWeights(double[] largest) {
-        double[] mean = neighbourhoods.mean(variance, largest, meanScratch);
+    private double[] budgetWeights() {
+        double[] largest = neighbourhoods.largest(variance, weightScratch);
+        double[] others = neighbourhoods.meanOfOthers(variance, largest, meanScratch);
         double[] weight = largest;
-        for (int p = 0; p < weight.length; p++) weight[p] = Math.sqrt(Math.sqrt(Math.max(variance[p], mean[p])));
+        for (int p = 0; p < weight.length; p++) weight[p] = Math.sqrt(Math.sqrt(others[p]));
         return withFloor(weight);
     }
 

@@ -6,6 +6,7 @@ import primitives.Vector;
 import renderer.sampling.SampleStream;
 import renderer.sampling.SamplingConfig;
 import renderer.sampling.SamplingPattern;
+import renderer.sampling.Sobol2D;
 import renderer.sampling.SuperSamplingBlackboard;
 import renderer.sampling.TargetShape;
 
@@ -134,7 +135,8 @@ final class PixelSampler {
      * Samples {@code first} to {@code first + count - 1} of half {@code half} of pixel (x, y) over the pixel's area,
      * into the half's sums at {@code sums[o]} (red, green, blue), each colour added in turn: the Halton points of
      * those indices over the pixel, shifted by the half's own random offset (Cranley-Patterson rotation), so that the
-     * two halves are independent low-discrepancy estimates of the pixel. One loop, not a call per sample: the
+     * two halves are independent low-discrepancy estimates of the pixel; or, where the context asks
+     * ({@code sobolArea}), the {@link Sobol2D} points, digitally shifted by that offset's bits. One loop, not a call per sample: the
      * anti-aliasing experiment's progressive renders, warm, about 0.955x the time.
      */
     void progressiveArea(int x, int y, int half, int first, int count, double[] sums, int o, TraceContext ctx) {
@@ -142,12 +144,20 @@ final class PixelSampler {
         double u = centreU(x), v = centreV(y);
         double shiftX = ctx.halfShifts[2 * half], shiftY = ctx.halfShifts[2 * half + 1];
         long pixelSeed = ctx.progressivePixelSeed;
+        boolean sobol = ctx.sobolArea;
+        int sobolX = Sobol2D.shift(shiftX), sobolY = Sobol2D.shift(shiftY);
         for (int index = first, end = first + count; index < end; index++) {
             ctx.sequenceIndex = index;
-            double ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + shiftX;
-            double oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + shiftY;
-            if (ox >= 1) ox -= 1;
-            if (oy >= 1) oy -= 1;
+            double ox, oy;
+            if (sobol) {
+                ox = Sobol2D.x(index, sobolX);
+                oy = Sobol2D.y(index, sobolY);
+            } else {
+                ox = SuperSamplingBlackboard.radicalInverse2(index + 1) + shiftX;
+                oy = SuperSamplingBlackboard.radicalInverse(3, index + 1) + shiftY;
+                if (ox >= 1) ox -= 1;
+                if (oy >= 1) oy -= 1;
+            }
             sample(u + (ox - 0.5) * pixelWidth, v - (oy - 0.5) * pixelHeight, pathSeed(pixelSeed, half, index), ctx);
             sums[o] += ctx.red;
             sums[o + 1] += ctx.green;

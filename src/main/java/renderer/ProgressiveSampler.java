@@ -12,6 +12,12 @@ import java.util.Arrays;
  * over its 3 x 3 neighbourhood. The {@link PassPlanner} turns the variances into the next pass's goals, and the next
  * pass measures again.
  *
+ * <p>A time budget weighs each pixel by its neighbours' estimates only, so that its own estimate, which nothing then
+ * chose, predicts its error without bias; and it draws its points from the Sobol sequence ({@link
+ * renderer.sampling.Sobol2D}) rather than Halton, whose (0, 2)-nets win back more than the pixel's own estimate was
+ * worth to the weights (docs/ACCURACY.md, "An honest budget", 27 Nov). A target stops on its estimates and keeps the
+ * Halton halves, with which its predictions hold within 10%.
+ *
  * <p>Pixels are planned in image order and each pass's decisions depend only on the pixels' values, so the samples,
  * and the image, are the same for any number of threads (a time budget, which measures time, is the exception).
  */
@@ -43,6 +49,8 @@ final class ProgressiveSampler {
     private final double[] variance;
     /** Samples every pixel reaches first. */
     private final int minimum;
+    /** Whether the render spends a time budget (or seeks a target error). */
+    private final boolean timeBudget;
     /** The plans of the passes, and the prediction they follow. */
     final PassPlanner planner;
     /** A time budget's end, which stops a pass where it has come to (armed after the first pass). */
@@ -61,7 +69,8 @@ final class ProgressiveSampler {
         done = new int[n];
         goal = new int[n];
         variance = new double[n];
-        planner = new PassPlanner(done, goal, variance, minimum, settings.maxSamples(), nX, nY);
+        timeBudget = settings.timeBudgetSeconds() > 0;
+        planner = new PassPlanner(done, goal, variance, minimum, settings.maxSamples(), nX, nY, timeBudget);
         // A budget starts small (4 samples) so that a short budget is kept, and not below 4 even where the minimum is
         // lower: it spends its time by the estimates, which one sample per half makes too rough (the accuracy
         // report's soft shadows at the time of 64 fixed samples, two runs four minutes apart: RMSE 4.6 starting from
@@ -103,7 +112,6 @@ final class ProgressiveSampler {
             long taken = samples() - before;
             if (taken > 0) perSample = (System.nanoTime() - passStart) * 1e-9 / taken;
         }
-        if (budget > 0) planner.fitLaw();
     }
 
     /** What the render predicted and spent. */
@@ -126,6 +134,11 @@ final class ProgressiveSampler {
         int p = y * nX + x;
         int from = done[p], to = goal[p];
         if (to <= from || deadline.passed(ctx)) return;
+        // A time budget's points come from the Sobol sequence (see the class description); its beams only where the
+        // pixel's area is not sampled too: the same sequence in both, the beam's first coordinate would follow the
+        // area's (point 2k's is point k's halved), and the street's error rose 6% that way.
+        ctx.sobolArea = timeBudget && pixels.samplesArea();
+        ctx.sobolBeams = timeBudget && !pixels.samplesArea();
         if (pixels.samplesArea()) {
             // Samples over the pixel's area: each traces its own camera ray, added to its half's sums as it comes.
             for (int half = 0; half < 2; half++) {

@@ -61,6 +61,11 @@ public final class TraceContext {
      * {@link RayTracerBase#traceAgainBatch}): its shadow beams take that many samples' points at once. 1 otherwise.
      */
     int sequenceBatch = 1;
+    /**
+     * Whether a progressive render's points over the pixel's area, and its effect beams' points, come from
+     * {@link renderer.sampling.Sobol2D} instead of Halton (a time budget's; see {@link ProgressiveSampler}).
+     */
+    boolean sobolArea, sobolBeams;
 
     /** The pixel whose progressive seeds follow (-1: none yet): its seed, and each half's seed and shift (x, y). */
     int progressivePixel = -1;
@@ -121,8 +126,13 @@ public final class TraceContext {
             long stream, int count, int samples, renderer.sampling.TargetShape shape, double[] out) {
         SampleStream shift = random.reset(SampleStream.mix(sequenceSeed, stream));
         double rx = shift.nextDouble(), ry = shift.nextDouble();
-        renderer.sampling.SuperSamplingBlackboard.haltonContinued(
-                count * samples, (long) sequenceIndex * count, shape, rx, ry, out);
+        if (sobolBeams) {
+            renderer.sampling.SuperSamplingBlackboard.sobolContinued(
+                    count * samples, (long) sequenceIndex * count, shape, rx, ry, out);
+        } else {
+            renderer.sampling.SuperSamplingBlackboard.haltonContinued(
+                    count * samples, (long) sequenceIndex * count, shape, rx, ry, out);
+        }
         return true;
     }
 

@@ -27,19 +27,6 @@ class ConvergenceLawTest {
         assertEquals(alpha, law.alpha(), 1.0 / 128);
     }
 
-    /** The same from every k-th refined pixel: the fit at a time budget's end reads at most a few thousand. */
-    @ParameterizedTest(name = "alpha {0}")
-    @MethodSource("exponents")
-    void fitsTheExponentFromEveryKthRefinedPixel(double alpha) {
-        double[] mse = new double[PIXELS];
-        int[] done = new int[PIXELS];
-        // 2,730 pixels refined, the fit asked to read 100: every 28th in image order, 98 of them. Only those follow the
-        // law; the others fall as 1/n, and read with them they would pull alpha toward 1.
-        ConvergenceLaw law = planAndRefine(mse, done, refined -> refined % 28 == 0 ? alpha : 1.0);
-        law.fit(mse, done, 100);
-        assertEquals(alpha, law.alpha(), 1.0 / 128);
-    }
-
     /**
      * A law that remembered a plan over random MSEs and counts, after a pass that refined two pixels in three (the
      * others are left out of a fit), the k-th of them falling as n^-{@code exponent(k)}; the pass's MSEs and counts in

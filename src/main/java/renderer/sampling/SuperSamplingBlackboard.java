@@ -104,6 +104,31 @@ public final class SuperSamplingBlackboard {
     }
 
     /**
+     * As {@link #haltonContinued}, from the {@link Sobol2D} points {@code first} to {@code first + count - 1}, each
+     * coordinate digitally shifted by the first 32 bits of (rx, ry).
+     *
+     * @param count the number of points, at least 1
+     * @param first how many points of the sequence come before these, at least 0
+     * @param shape the square {@code [-1/2, 1/2]^2} or the disk of diameter 1
+     * @param rx the shift along x, in [0, 1)
+     * @param ry the shift along y, in [0, 1)
+     * @param out the array receiving x, y pairs in its first {@code 2 * count} elements
+     */
+    public static void sobolContinued(int count, long first, TargetShape shape, double rx, double ry, double[] out) {
+        int sx = Sobol2D.shift(rx), sy = Sobol2D.shift(ry);
+        for (int i = 0; i < count; i++) {
+            int index = (int) (first + i);
+            double u = Sobol2D.x(index, sx), v = Sobol2D.y(index, sy);
+            if (shape == TargetShape.CIRCLE) {
+                concentricDisk(u, v, out, 2 * i);
+            } else {
+                out[2 * i] = u - 0.5;
+                out[2 * i + 1] = v - 0.5;
+            }
+        }
+    }
+
+    /**
      * The base-3 radical inverses of the first indices, which progressive beams read over and over. Filled when the
      * class loads, which a command-line render pays for in the interpreter: 4,096 entries took a few milliseconds
      * there where 16,384 took 6 to 20.
