@@ -15,8 +15,8 @@ import java.util.Arrays;
  * <p>A time budget weighs each pixel by its neighbours' estimates only, so that its own estimate, which nothing then
  * chose, predicts its error without bias; and it draws its points from the Sobol sequence ({@link
  * renderer.sampling.Sobol2D}) rather than Halton, whose (0, 2)-nets win back more than the pixel's own estimate was
- * worth to the weights (docs/ACCURACY.md, "An honest time budget", 27 Nov). A target stops on its estimates and keeps the
- * Halton halves, with which its predictions hold within 10%.
+ * worth to the weights (docs/ACCURACY.md, "An honest time budget", 27 Nov). A target stops on its estimates and keeps
+ * the Halton halves, with which its predictions hold within 10%.
  *
  * <p>Pixels are planned in image order and each pass's decisions depend only on the pixels' values, so the samples,
  * and the image, are the same for any number of threads (a time budget, which measures time, is the exception).
