@@ -70,7 +70,8 @@ final class PassPlanner {
      * The predicted RMSE of the image against the converged one, on the 0..255 scale: per pixel, the MSEs of its 3 x 3
      * neighbourhood, each carried to the pixel's own samples by the convergence law, averaged. (The pixel's own
      * estimate alone is biased low once it has decided the pixel's samples: pixels whose few samples agreed by chance
-     * stop early and keep their estimate of zero.)
+     * stop early and keep their estimate of zero.) A time budget's plans never weigh a pixel by its own estimate, so it
+     * predicts from those alone ({@link #ownMse}).
      */
     double predictedError() {
         if (timeBudget) return Math.sqrt(ownMse());

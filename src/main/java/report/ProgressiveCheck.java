@@ -84,20 +84,18 @@ final class ProgressiveCheck {
             List<Measurement> budgets,
             int repeats) {
         List<Request> requests = new ArrayList<>();
-        for (double target : targets) {
-            requests.add(new Request(ProgressiveSettings.targetError(target), 0, referenceError));
-        }
+        for (double target : targets) requests.add(new Request(ProgressiveSettings.targetError(target), 0));
         for (Measurement fixed : budgets) {
-            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed.rmse(), referenceError));
+            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed.rmse()));
         }
         // Warm-up, untimed: every request once, so that the JIT has compiled both plans (toward an error and for a
         // budget) before the first timed render, as the fixed renders before these ran their path many times.
-        for (Request request : requests) render(experiment, reference, width, height, request);
+        for (Request request : requests) render(experiment, reference, referenceError, width, height, request);
         List<Row> rows = new ArrayList<>();
         for (Request request : requests) {
             List<Row> runs = new ArrayList<>();
             do {
-                runs.add(render(experiment, reference, width, height, request));
+                runs.add(render(experiment, reference, referenceError, width, height, request));
             } while (runs.size() < repeats && runs.get(0).seconds() <= AccuracyReport.SLOW_RENDER_SECONDS);
             rows.add(median(runs));
         }
@@ -130,13 +128,16 @@ final class ProgressiveCheck {
                 m.referenceError());
     }
 
-    /**
-     * What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time; with the
-     * reference's own RMSE, which every row carries.
-     */
-    private record Request(ProgressiveSettings settings, double fixedRmse, double referenceError) {}
+    /** What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time. */
+    private record Request(ProgressiveSettings settings, double fixedRmse) {}
 
-    private static Row render(Experiment experiment, ImageWriter reference, int width, int height, Request request) {
+    private static Row render(
+            Experiment experiment,
+            ImageWriter reference,
+            double referenceError,
+            int width,
+            int height,
+            Request request) {
         ProgressiveSettings settings = request.settings();
         Camera camera =
                 experiment.progressive(width, height).setProgressive(settings).renderImage();
@@ -158,7 +159,7 @@ final class ProgressiveCheck {
                 camera.getLastStatistics().wallSeconds(),
                 report.samples(),
                 request.fixedRmse(),
-                request.referenceError());
+                referenceError);
     }
 
     /** The Markdown table of the rows. */

@@ -65,15 +65,7 @@ public final class SuperSamplingBlackboard {
                 }
             }
         }
-        for (int i = 0; i < count; i++) {
-            double u = out[2 * i], v = out[2 * i + 1];
-            if (shape == TargetShape.CIRCLE) {
-                concentricDisk(u, v, out, 2 * i);
-            } else {
-                out[2 * i] = u - 0.5;
-                out[2 * i + 1] = v - 0.5;
-            }
-        }
+        for (int i = 0; i < count; i++) place(out[2 * i], out[2 * i + 1], shape, out, 2 * i);
     }
 
     /**
@@ -93,13 +85,7 @@ public final class SuperSamplingBlackboard {
         for (int i = 0; i < count; i++) {
             long index = first + i + 1;
             double u = wrap((Long.reverse(index) >>> 11) * 0x1.0p-53 + rx);
-            double v = wrap(radicalInverse3(index) + ry);
-            if (shape == TargetShape.CIRCLE) {
-                concentricDisk(u, v, out, 2 * i);
-            } else {
-                out[2 * i] = u - 0.5;
-                out[2 * i + 1] = v - 0.5;
-            }
+            place(u, wrap(radicalInverse3(index) + ry), shape, out, 2 * i);
         }
     }
 
@@ -118,13 +104,7 @@ public final class SuperSamplingBlackboard {
         int sx = Sobol2D.shift(rx), sy = Sobol2D.shift(ry);
         for (int i = 0; i < count; i++) {
             int index = (int) (first + i);
-            double u = Sobol2D.x(index, sx), v = Sobol2D.y(index, sy);
-            if (shape == TargetShape.CIRCLE) {
-                concentricDisk(u, v, out, 2 * i);
-            } else {
-                out[2 * i] = u - 0.5;
-                out[2 * i + 1] = v - 0.5;
-            }
+            place(Sobol2D.x(index, sx), Sobol2D.y(index, sy), shape, out, 2 * i);
         }
     }
 
@@ -227,6 +207,16 @@ public final class SuperSamplingBlackboard {
                 out[2 * i + 1] = (r + jv) / rows;
                 i++;
             }
+        }
+    }
+
+    /** Point (u, v) of the unit square mapped to {@code shape}, into {@code out[at]} and {@code out[at + 1]}. */
+    private static void place(double u, double v, TargetShape shape, double[] out, int at) {
+        if (shape == TargetShape.CIRCLE) {
+            concentricDisk(u, v, out, at);
+        } else {
+            out[at] = u - 0.5;
+            out[at + 1] = v - 0.5;
         }
     }
 
