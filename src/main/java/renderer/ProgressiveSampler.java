@@ -136,7 +136,7 @@ final class ProgressiveSampler {
         if (to <= from || deadline.passed(ctx)) return;
         // A time budget's points come from the Sobol sequence (see the class description); its beams only where the
         // pixel's area is not sampled too: the same sequence in both, the beam's first coordinate would follow the
-        // area's (point 2k's is point k's halved), and the street's error rose 6% that way.
+        // area's (point 2k's is point k's halved): on the street, 1.060 of the error before instead of 0.968.
         ctx.sobolArea = timeBudget && pixels.samplesArea();
         ctx.sobolBeams = timeBudget && !pixels.samplesArea();
         if (pixels.samplesArea()) {
