@@ -256,7 +256,8 @@ public final class AccuracyReport {
                     h,
                     PROGRESSIVE_TARGETS,
                     budgets(byVariant),
-                    options.repeats());
+                    options.repeats(),
+                    log);
             for (ProgressiveCheck.Row r : checks) {
                 log.printf(
                         Locale.ROOT,

@@ -1,9 +1,13 @@
 package report;
 
+import java.io.PrintStream;
+import java.lang.management.CompilationMXBean;
+import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Function;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.ProgressiveReport;
@@ -67,12 +71,16 @@ final class ProgressiveCheck {
 
     /**
      * Runs the check: renders per target, renders per budget (each budget the time of a fixed HALTON render whose
-     * error is given beside it). Measured in a JVM as warm as the fixed renders': every request rendered once,
-     * untimed, first (a short budget is otherwise spent partly by the JIT compiling the progressive path, which the
-     * fixed renders before it did not run: anti-aliasing's 0.09 s budget needed about four renders to settle), then
-     * {@code repeats} renders per row. A target's samples and image do not depend on time, so its row keeps
+     * error is given beside it). Measured in a JVM as warm as the fixed renders': untimed rounds of the requests
+     * first, until the JIT is quiet ({@link #warmUp}; a short budget is otherwise spent partly by the JIT compiling the
+     * progressive path, which the fixed renders before it did not run), then {@code repeats} renders per row. A target's samples and image do not depend on time, so its row keeps
      * the median time; a budget's samples do, so its row keeps the render of median error, and the range of the
      * errors is kept beside it. A render slower than {@link AccuracyReport#SLOW_RENDER_SECONDS} is not repeated.
+     *
+     * <p>Each budgeted render is given the time of the fixed render timed just before it, not the fixed renders'
+     * median from earlier in the report: the machine's speed drifts, and a budget timed in a slower minute than its
+     * fixed render buys fewer samples for a reason that has nothing to do with sampling (soft shadows' 0.05 s budget
+     * once spread from RMSE 2.03 to 2.98 over three renders).
      */
     static List<Row> run(
             Experiment experiment,
@@ -82,15 +90,15 @@ final class ProgressiveCheck {
             int height,
             double[] targets,
             List<Measurement> budgets,
-            int repeats) {
+            int repeats,
+            PrintStream log) {
         List<Request> requests = new ArrayList<>();
-        for (double target : targets) requests.add(new Request(ProgressiveSettings.targetError(target), 0));
+        for (double target : targets) requests.add(new Request(ProgressiveSettings.targetError(target), null));
         for (Measurement fixed : budgets) {
-            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed.rmse()));
+            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed));
         }
-        // Warm-up, untimed: every request once, so that the JIT has compiled both plans (toward an error and for a
-        // budget) before the first timed render, as the fixed renders before these ran their path many times.
-        for (Request request : requests) render(experiment, reference, referenceError, width, height, request);
+        int rounds = warmUp(requests, request -> render(experiment, reference, referenceError, width, height, request));
+        log.printf(Locale.ROOT, "  progressive warm-up: %d round(s)%n", rounds);
         List<Row> rows = new ArrayList<>();
         for (Request request : requests) {
             List<Row> runs = new ArrayList<>();
@@ -100,6 +108,41 @@ final class ProgressiveCheck {
             rows.add(median(runs));
         }
         return rows;
+    }
+
+    /** Rounds of warm-up at most, should the JIT never fall quiet (a busy machine's other JVMs do not count). */
+    static final int MAX_WARM_UP_ROUNDS = 12;
+
+    /** A render slower than this is warmed up in the first round only: the renders before it warm its path. */
+    static final double WARM_UP_ONCE_SECONDS = 2;
+
+    /** The JIT is quiet once it compiles for less than this share of a round's wall time. */
+    static final double QUIET_JIT = 0.02;
+
+    /**
+     * Warm-up, untimed: rounds of every request (a slow one in the first round only), until the JIT compiles for less
+     * than {@link #QUIET_JIT} of a round's time, so that the timed renders run compiled code, as the fixed renders
+     * before them did. One round was not enough: over a time budget's first 20 renders of the anti-aliasing
+     * experiment (0.09 s each), the JIT compiled for 40-165 ms per render, on one of the machine's two cores, and
+     * the renders took 150,000-500,000 samples; then 1-10 ms and 550,000-1,000,000 (27 Nov). Where the JVM cannot
+     * tell its compilation time, three rounds.
+     *
+     * @return the rounds rendered
+     */
+    static int warmUp(List<Request> requests, Function<Request, Row> render) {
+        CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
+        boolean timed = jit != null && jit.isCompilationTimeMonitoringSupported();
+        List<Request> again = new ArrayList<>();
+        for (int round = 1; ; round++) {
+            long compiled = timed ? jit.getTotalCompilationTime() : 0, start = System.nanoTime();
+            for (Request request : round == 1 ? requests : again) {
+                Row row = render.apply(request);
+                if (round == 1 && row.seconds() <= WARM_UP_ONCE_SECONDS) again.add(request);
+            }
+            double millis = (System.nanoTime() - start) * 1e-6;
+            boolean quiet = timed ? jit.getTotalCompilationTime() - compiled < QUIET_JIT * millis : round == 3;
+            if (quiet || again.isEmpty() || round == MAX_WARM_UP_ROUNDS) return round;
+        }
     }
 
     /**
@@ -128,8 +171,8 @@ final class ProgressiveCheck {
                 m.referenceError());
     }
 
-    /** What a row asks: a target or a budget, and for a budget the fixed HALTON render's RMSE in that time. */
-    private record Request(ProgressiveSettings settings, double fixedRmse) {}
+    /** What a row asks: a target, or a budget and the fixed HALTON render whose time it is (else null). */
+    record Request(ProgressiveSettings settings, Measurement fixed) {}
 
     private static Row render(
             Experiment experiment,
@@ -139,6 +182,14 @@ final class ProgressiveCheck {
             int height,
             Request request) {
         ProgressiveSettings settings = request.settings();
+        Measurement fixed = request.fixed();
+        if (fixed != null) {
+            // The budget is the fixed render's time in this minute (see run).
+            Camera timed = experiment
+                    .camera(Variant.HALTON, fixed.samples(), width, height)
+                    .renderImage();
+            settings = ProgressiveSettings.timeBudget(timed.getLastStatistics().wallSeconds());
+        }
         Camera camera =
                 experiment.progressive(width, height).setProgressive(settings).renderImage();
         ProgressiveReport report = camera.getLastProgressiveReport();
@@ -158,7 +209,7 @@ final class ProgressiveCheck {
                 1,
                 camera.getLastStatistics().wallSeconds(),
                 report.samples(),
-                request.fixedRmse(),
+                fixed == null ? 0 : fixed.rmse(),
                 referenceError);
     }
 

@@ -2,9 +2,12 @@ package report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import renderer.ProgressiveSettings;
 
 /** How the progressive check reduces repeated renders of one request to its row. */
 class ProgressiveCheckTest {
@@ -60,5 +63,28 @@ class ProgressiveCheckTest {
         ProgressiveCheck.Row m = ProgressiveCheck.median(List.of(one));
         assertEquals(one, m);
         assertEquals("0.770 (1 render)", ProgressiveCheck.range(m));
+    }
+
+    @Test
+    void theWarmUpRendersASlowRequestOnlyInItsFirstRound() {
+        ProgressiveCheck.Request quick = new ProgressiveCheck.Request(ProgressiveSettings.targetError(2), null);
+        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(ProgressiveSettings.timeBudget(6), null);
+        List<ProgressiveCheck.Request> rendered = new ArrayList<>();
+        int rounds = ProgressiveCheck.warmUp(List.of(quick, slow), request -> {
+            rendered.add(request);
+            // Whether the JIT is quiet here depends on the JVM's state, so the test asks only what holds either way.
+            return row(0, 0, 1, request == slow ? ProgressiveCheck.WARM_UP_ONCE_SECONDS + 1 : 0.01, 1);
+        });
+        assertTrue(rounds >= 1 && rounds <= ProgressiveCheck.MAX_WARM_UP_ROUNDS, rounds + " rounds");
+        assertEquals(1, rendered.stream().filter(r -> r == slow).count(), "the slow request once");
+        assertEquals(rounds, rendered.stream().filter(r -> r == quick).count(), "the quick request every round");
+    }
+
+    @Test
+    void theWarmUpEndsAfterOneRoundWhenEveryRequestIsSlow() {
+        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(ProgressiveSettings.timeBudget(6), null);
+        int rounds = ProgressiveCheck.warmUp(
+                List.of(slow), request -> row(0, 6, 1, ProgressiveCheck.WARM_UP_ONCE_SECONDS + 1, 1));
+        assertEquals(1, rounds);
     }
 }
