@@ -110,9 +110,11 @@ final class PassPlanner {
 
     /**
      * The image's MSE as the mean of the pixels' own estimates: a time budget's prediction. Its plans weigh each pixel
-     * by its neighbours' estimates only, and its first passes every pixel alike, so nothing chose a pixel's samples by
-     * its own, and each estimate is unbiased. (A target plans on the pixels' own estimates, which are then biased low,
-     * and predicts from its neighbourhoods.)
+     * by its neighbours' estimates only, and its first passes every pixel alike, so no plan reads a pixel's own
+     * estimate to choose its samples. Nearly unbiased: a pixel's samples still sway its later shares a little,
+     * through the shares of its neighbours, which read them (0.84-1.00 of the error on the accuracy report's
+     * anti-aliasing, 0.96-1.11 elsewhere: docs/ACCURACY.md, 27 Nov). (A target plans on the pixels' own estimates,
+     * which are then biased low, and predicts from its neighbourhoods.)
      */
     private double ownMse() {
         double sum = 0;
@@ -282,11 +284,11 @@ final class PassPlanner {
     /**
      * A time budget's share of new samples per pixel: the fourth root of the mean variance of one sample of its
      * neighbours (the pixels of its 3 x 3 neighbourhood but itself), plus a twentieth of the image's mean (written over
-     * the array of the neighbourhoods' largest variances). Not the pixel's own estimate, so that its own, which nothing
-     * chose, predicts its error without bias ({@link #predictedError}): at the price of 2-3% of a budget's error in
-     * equal time, which its Sobol points win back (docs/ACCURACY.md, 27 Nov). The fourth root, not the target's square
-     * root: a low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best share
-     * grows more slowly than its standard deviation, and a root damps the estimates that came out large by chance.
+     * the array of the neighbourhoods' largest variances). Not the pixel's own estimate, so that its own predicts its
+     * error with little bias ({@link #predictedError}): at the price of 2-3% of a budget's error in equal time, which
+     * its Sobol points win back (docs/ACCURACY.md, 27 Nov). The fourth root, not the target's square root: a
+     * low-discrepancy pixel's error falls faster than {@code 1/n} ({@link ConvergenceLaw}), so its best share grows
+     * more slowly than its standard deviation, and a root damps the estimates that came out large by chance.
      */
     private double[] budgetWeights() {
         double[] largest = neighbourhoods.largest(variance, weightScratch);

@@ -12,8 +12,8 @@ import java.util.Arrays;
  * over its 3 x 3 neighbourhood. The {@link PassPlanner} turns the variances into the next pass's goals, and the next
  * pass measures again.
  *
- * <p>A time budget weighs each pixel by its neighbours' estimates only, so that its own estimate, which nothing then
- * chose, predicts its error without bias; and it draws its points from the Sobol sequence ({@link
+ * <p>A time budget weighs each pixel by its neighbours' estimates only, so that its own estimate, which no plan reads
+ * for its own samples, predicts its error with little bias; and it draws its points from the Sobol sequence ({@link
  * renderer.sampling.Sobol2D}) rather than Halton, whose (0, 2)-nets win back more than the pixel's own estimate was
  * worth to the weights (docs/ACCURACY.md, "An honest time budget", 27 Nov). A target stops on its estimates and keeps
  * the Halton halves, with which its predictions hold within 10%.
