@@ -196,7 +196,7 @@ final class ProgressiveCheck {
         double measured = ImageError.between(camera.getImage(), reference).rmse();
         String asked = settings.targetError() > 0
                 ? String.format(Locale.ROOT, "RMSE %.3g", settings.targetError())
-                : String.format(Locale.ROOT, "%.2f s", settings.timeBudgetSeconds());
+                : String.format(Locale.ROOT, "%.3g s", settings.timeBudgetSeconds());
         return new Row(
                 experiment.slug(),
                 asked,
