@@ -348,7 +348,16 @@ final class PassPlanner {
     private int halfGoal(double[] weight, double lambda, int p) {
         int max = Math.min(maxSamples / 2, GROWTH * done[p]);
         double wanted = weight[p] > 0 ? Math.ceil(lambda * weight[p] / 2) : 0; // (infinity times 0 is NaN)
-        int goal = (int) Math.max(done[p], Math.min(max, wanted));
+        return (int) Math.max(done[p], Math.min(max, wanted));
+    }
+
+    /**
+     * The goal a plan sets pixel {@code p}: {@link #halfGoal}, down to a whole net where asked ({@link #inWholeNets}).
+     * (A target's search calls {@code halfGoal} itself, once per noisy pixel and step, mostly interpreted in a command
+     * line's first plans, so that costs it no test.)
+     */
+    private int plannedGoal(double[] weight, double lambda, int p) {
+        int goal = halfGoal(weight, lambda, p);
         return wholeNets && goal > done[p] ? Math.max(done[p], Integer.highestOneBit(goal)) : goal;
     }
 
@@ -376,14 +385,14 @@ final class PassPlanner {
 
     private long extra(double[] weight, double lambda) {
         long sum = 0;
-        for (int p = 0; p < done.length; p++) sum += 2L * (halfGoal(weight, lambda, p) - done[p]);
+        for (int p = 0; p < done.length; p++) sum += 2L * (plannedGoal(weight, lambda, p) - done[p]);
         return sum;
     }
 
     private long setGoals(double[] weight, double lambda) {
         long planned = 0;
         for (int p = 0; p < done.length; p++) {
-            goal[p] = halfGoal(weight, lambda, p);
+            goal[p] = plannedGoal(weight, lambda, p);
             planned += 2L * (goal[p] - done[p]);
         }
         return planned;
