@@ -332,10 +332,10 @@ final class PassPlanner {
     /**
      * From now on, every goal is a power of two samples per half (rounded down; at least the pixel's samples, which
      * then are one too): a time budget's beams through the pixel's centre follow the Sobol points, whose first 2^m
-     * make a (0, m, 2)-net, and a count between two powers adds points that no longer cover the square evenly. Measured
-     * in equal time on the accuracy report's budgets (docs/ACCURACY.md, "Whole nets", 27 Nov): soft shadows 0.955 and
-     * 0.923 of the error, depth of field 0.956 and 0.902, glossy 0.909 and 0.865. Not over a pixel's area, where it
-     * was 1.062 on anti-aliasing's short budget.
+     * make a (0, m, 2)-net, and a count between two powers adds points that no longer cover the square evenly. In
+     * equal time on the accuracy report's budgets (docs/ACCURACY.md, "Whole nets for a budget's beams"): soft shadows
+     * 0.891 and 0.928 of the error, depth of field 0.96-1.07 (level) and 0.920, glossy 0.984 and 0.893. Not over a pixel's
+     * area, where anti-aliasing's short budget lost (1.040-1.062 in powers of two everywhere).
      *
      * @return this planner
      */
