@@ -334,8 +334,8 @@ final class PassPlanner {
      * then are one too): a time budget's beams through the pixel's centre follow the Sobol points, whose first 2^m
      * make a (0, m, 2)-net, and a count between two powers adds points that no longer cover the square evenly. In
      * equal time on the accuracy report's budgets (docs/ACCURACY.md, "Whole nets for a budget's beams"): soft shadows
-     * 0.891 and 0.928 of the error, depth of field 0.96-1.07 (level) and 0.920, glossy 0.984 and 0.893. Not over a pixel's
-     * area, where anti-aliasing's short budget lost (1.040-1.062 in powers of two everywhere).
+     * 0.891 and 0.928 of the error, depth of field 0.96-1.07 (level) and 0.920, glossy 0.984 and 0.893. Not over a
+     * pixel's area, where anti-aliasing's short budget lost (1.040-1.062 in powers of two everywhere).
      *
      * @return this planner
      */
