@@ -75,7 +75,8 @@ final class ProgressiveCheck {
      * first, until the JIT is quiet ({@link #warmUp}; a short budget is otherwise spent partly by the JIT compiling the
      * progressive path, which the fixed renders before it did not run), then {@code repeats} renders per row. A
      * target's samples and image do not depend on time, so its row keeps the median time; a budget's samples do, so
-     * its row keeps the render of median error, and the range of the errors is kept beside it. A render slower than {@link AccuracyReport#SLOW_RENDER_SECONDS} is not repeated.
+     * its row keeps the render of median error, and the range of the errors is kept beside it. A render slower than
+     * {@link AccuracyReport#SLOW_RENDER_SECONDS} is not repeated.
      *
      * <p>Each budgeted render is given the time of the fixed render timed just before it, not the fixed renders'
      * median from earlier in the report: the machine's speed drifts, and a budget timed in a slower minute than its
