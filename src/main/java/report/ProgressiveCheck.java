@@ -125,7 +125,7 @@ final class ProgressiveCheck {
      * than {@link #QUIET_JIT} of a round's time, so that the timed renders run compiled code, as the fixed renders
      * before them did. One round was not enough: over a time budget's first 20 renders of the anti-aliasing
      * experiment (0.09 s each), the JIT compiled for 40-165 ms per render, on one of the machine's two cores, and
-     * the renders took 150,000-500,000 samples; then 1-10 ms and 550,000-1,000,000 (27 Nov). Where the JVM cannot
+     * the renders took 153,000-863,000 samples; then 0-10 ms and 551,000-1,007,000 (27 Nov). Where the JVM cannot
      * tell its compilation time, three rounds.
      *
      * @return the rounds rendered
