@@ -42,8 +42,11 @@ final class PassPlanner {
     /** Whether the plans spend a time budget: then each pixel's weight comes from its neighbours' estimates only. */
     private final boolean timeBudget;
 
-    /** Whether each half's samples end at a power of two: a whole net of the Sobol points ({@link #inWholeNets}). */
-    private boolean wholeNets;
+    /**
+     * From how many samples per half a pixel's passes end at a power of two, a whole net of the Sobol points
+     * ({@link #inWholeNets}); by default never.
+     */
+    private int wholeNetsFrom = Integer.MAX_VALUE;
 
     /** Plans for the sampler's arrays, which it fills; {@code nX} x {@code nY} pixels, toward a target or a budget. */
     PassPlanner(
@@ -330,17 +333,20 @@ final class PassPlanner {
     }
 
     /**
-     * From now on, every goal is a power of two samples per half (rounded down; at least the pixel's samples, which
-     * then are one too): a time budget's beams through the pixel's centre follow the Sobol points, whose first 2^m
-     * make a (0, m, 2)-net, and a count between two powers adds points that no longer cover the square evenly. In
-     * equal time on the accuracy report's budgets (docs/ACCURACY.md, "Whole nets for a budget's beams"): soft shadows
-     * 0.891 and 0.928 of the error, depth of field 0.96-1.07 (level) and 0.920, glossy 0.984 and 0.893. Not over a
-     * pixel's area, where anti-aliasing's short budget lost (1.040-1.062 in powers of two everywhere).
+     * From now on, a pixel that holds at least {@code from} samples per half gets goals of a power of two (rounded
+     * down; at least its samples): a time budget's points follow the Sobol sequence, whose first 2^m make a
+     * (0, m, 2)-net, and a count between two powers adds points that no longer cover the square evenly. Measured in
+     * equal time on the accuracy report's budgets (docs/ACCURACY.md, "Whole nets for a budget's beams"): through the
+     * pixel's centre from the start ({@code from} 0), soft shadows 0.891 and 0.928 of the error, depth of field
+     * 0.96-1.07 (level) and 0.920, glossy 0.984 and 0.893; over the pixel's area from 16 per half, anti-aliasing
+     * 0.95-1.01 and 0.95-0.97, the street 0.94-0.97. Over the area from the start, anti-aliasing's short budget lost
+     * (1.040-1.062): its first passes need the finer steps.
      *
+     * @param from samples per half from which a pixel's goals are whole nets
      * @return this planner
      */
-    PassPlanner inWholeNets() {
-        wholeNets = true;
+    PassPlanner inWholeNets(int from) {
+        wholeNetsFrom = from;
         return this;
     }
 
@@ -358,7 +364,7 @@ final class PassPlanner {
      */
     private int plannedGoal(double[] weight, double lambda, int p) {
         int goal = halfGoal(weight, lambda, p);
-        return wholeNets && goal > done[p] ? Math.max(done[p], Integer.highestOneBit(goal)) : goal;
+        return goal > done[p] && done[p] >= wholeNetsFrom ? Math.max(done[p], Integer.highestOneBit(goal)) : goal;
     }
 
     /**
