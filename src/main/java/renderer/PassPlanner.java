@@ -118,8 +118,8 @@ final class PassPlanner {
      * The image's MSE as the mean of the pixels' own estimates: a time budget's prediction. Its plans weigh each pixel
      * by its neighbours' estimates only, and its first passes every pixel alike, so no plan reads a pixel's own
      * estimate to choose its samples. Nearly unbiased: a pixel's samples still sway its later shares a little,
-     * through the shares of its neighbours, which read them (0.83-1.03 of the error on the accuracy report's
-     * anti-aliasing, 0.95-1.14 elsewhere: docs/ACCURACY.md, 27 Nov). (A target plans on the pixels' own estimates,
+     * through the shares of its neighbours, which read them (0.82-1.03 of the error on the accuracy report's
+     * anti-aliasing, 0.95-1.16 elsewhere: docs/ACCURACY.md, 27 Nov). (A target plans on the pixels' own estimates,
      * which are then biased low, and predicts from its neighbourhoods.)
      */
     private double ownMse() {
