@@ -282,9 +282,12 @@ final class PassPlanner {
         return lo;
     }
 
+    /** The samples a plan with {@code lambda} would add, counted as one of the search's sums over the image. */
     private long countedExtra(double[] weight, double lambda) {
         searchSteps++;
-        return extra(weight, lambda);
+        long sum = 0;
+        for (int p = 0; p < done.length; p++) sum += 2L * (plannedGoal(weight, lambda, p) - done[p]);
+        return sum;
     }
 
     /**
@@ -387,12 +390,6 @@ final class PassPlanner {
         int[] noisy = new int[count];
         for (int p = 0, k = 0; p < mse.length; p++) if (mse[p] != 0) noisy[k++] = p;
         return noisy;
-    }
-
-    private long extra(double[] weight, double lambda) {
-        long sum = 0;
-        for (int p = 0; p < done.length; p++) sum += 2L * (plannedGoal(weight, lambda, p) - done[p]);
-        return sum;
     }
 
     private long setGoals(double[] weight, double lambda) {

@@ -55,8 +55,13 @@ final class ProgressiveSampler {
     private final double[] variance;
     /** Samples every pixel reaches first. */
     private final int minimum;
-    /** Whether the render spends a time budget (or seeks a target error). */
-    private final boolean timeBudget;
+    /**
+     * Whether a time budget's points over the area, or its beams' points, follow the Sobol sequence (see the class
+     * description): its beams only where the pixel's area is not sampled too. With the same sequence in both, the
+     * beam's first coordinate would follow the area's (point 2k's is point k's halved): on the street, 1.060 of the
+     * error before instead of 0.968.
+     */
+    private final boolean sobolArea, sobolBeams;
     /** The plans of the passes, and the prediction they follow. */
     final PassPlanner planner;
     /** A time budget's end, which stops a pass where it has come to (armed after the first pass). */
@@ -75,7 +80,9 @@ final class ProgressiveSampler {
         done = new int[n];
         goal = new int[n];
         variance = new double[n];
-        timeBudget = settings.timeBudgetSeconds() > 0;
+        boolean timeBudget = settings.timeBudgetSeconds() > 0;
+        sobolArea = timeBudget && pixels.samplesArea();
+        sobolBeams = timeBudget && !pixels.samplesArea();
         planner = new PassPlanner(done, goal, variance, minimum, settings.maxSamples(), nX, nY, timeBudget);
         // A budget's points follow the Sobol sequence (see advance): whole nets of them per pass, over the area once a
         // pixel holds 16 per half.
@@ -84,7 +91,7 @@ final class ProgressiveSampler {
         // lower: it spends its time by the estimates, which one sample per half makes too rough (the accuracy
         // report's soft shadows at the time of 64 fixed samples, two runs four minutes apart: RMSE 4.6 starting from
         // 2, 4.0 from 4). A target starts from the minimum.
-        Arrays.fill(goal, settings.timeBudgetSeconds() > 0 ? FIRST_BUDGET_PASS / 2 : minimum / 2);
+        Arrays.fill(goal, timeBudget ? FIRST_BUDGET_PASS / 2 : minimum / 2);
     }
 
     /**
@@ -143,11 +150,8 @@ final class ProgressiveSampler {
         int p = y * nX + x;
         int from = done[p], to = goal[p];
         if (to <= from || deadline.passed(ctx)) return;
-        // A time budget's points come from the Sobol sequence (see the class description); its beams only where the
-        // pixel's area is not sampled too: the same sequence in both, the beam's first coordinate would follow the
-        // area's (point 2k's is point k's halved): on the street, 1.060 of the error before instead of 0.968.
-        ctx.sobolArea = timeBudget && pixels.samplesArea();
-        ctx.sobolBeams = timeBudget && !pixels.samplesArea();
+        ctx.sobolArea = sobolArea;
+        ctx.sobolBeams = sobolBeams;
         if (pixels.samplesArea()) {
             // Samples over the pixel's area: each traces its own camera ray, added to its half's sums as it comes.
             for (int half = 0; half < 2; half++) {

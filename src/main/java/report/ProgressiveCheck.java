@@ -94,10 +94,8 @@ final class ProgressiveCheck {
             int repeats,
             PrintStream log) {
         List<Request> requests = new ArrayList<>();
-        for (double target : targets) requests.add(new Request(ProgressiveSettings.targetError(target), null));
-        for (Measurement fixed : budgets) {
-            requests.add(new Request(ProgressiveSettings.timeBudget(fixed.seconds()), fixed));
-        }
+        for (double target : targets) requests.add(new Request(target, null));
+        for (Measurement fixed : budgets) requests.add(new Request(0, fixed));
         int rounds = warmUp(requests, request -> render(experiment, reference, referenceError, width, height, request));
         log.printf(Locale.ROOT, "  progressive warm-up: %d round(s)%n", rounds);
         List<Row> rows = new ArrayList<>();
@@ -172,8 +170,11 @@ final class ProgressiveCheck {
                 m.referenceError());
     }
 
-    /** What a row asks: a target, or a budget and the fixed HALTON render whose time it is (else null). */
-    record Request(ProgressiveSettings settings, Measurement fixed) {}
+    /**
+     * What a row asks: a target RMSE, or (with target 0) a time budget, the time of the fixed HALTON render
+     * {@code fixed} timed just before each of its renders.
+     */
+    record Request(double target, Measurement fixed) {}
 
     private static Row render(
             Experiment experiment,
@@ -182,9 +183,11 @@ final class ProgressiveCheck {
             int width,
             int height,
             Request request) {
-        ProgressiveSettings settings = request.settings();
         Measurement fixed = request.fixed();
-        if (fixed != null) {
+        ProgressiveSettings settings;
+        if (fixed == null) {
+            settings = ProgressiveSettings.targetError(request.target());
+        } else {
             // The budget is the fixed render's time in this minute (see run).
             Camera timed = experiment
                     .camera(Variant.HALTON, fixed.samples(), width, height)

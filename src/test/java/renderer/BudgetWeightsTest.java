@@ -8,8 +8,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * A time budget weighs each pixel by its neighbours' estimates, not its own: a pixel whose own estimate jumps a
- * hundredfold takes no more samples, and its neighbours take more. So nothing chooses a pixel's samples by its own
- * estimate, which then predicts its error without bias. (Weighed by its own estimate too, until 27 Nov, it took more.)
+ * hundredfold takes no more samples, and its neighbours take more. So no plan reads a pixel's own estimate to choose
+ * its samples, and the estimate predicts its error with little bias. (Weighed by its own estimate too, until 27 Nov,
+ * it took more.)
  */
 class BudgetWeightsTest {
     private static final int N = 12;

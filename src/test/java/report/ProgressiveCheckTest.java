@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import renderer.ProgressiveSettings;
 
 /** How the progressive check reduces repeated renders of one request to its row. */
 class ProgressiveCheckTest {
@@ -67,8 +66,8 @@ class ProgressiveCheckTest {
 
     @Test
     void theWarmUpRendersASlowRequestOnlyInItsFirstRound() {
-        ProgressiveCheck.Request quick = new ProgressiveCheck.Request(ProgressiveSettings.targetError(2), null);
-        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(ProgressiveSettings.timeBudget(6), null);
+        ProgressiveCheck.Request quick = new ProgressiveCheck.Request(2, null);
+        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(1, null);
         List<ProgressiveCheck.Request> rendered = new ArrayList<>();
         int rounds = ProgressiveCheck.warmUp(List.of(quick, slow), request -> {
             rendered.add(request);
@@ -82,7 +81,7 @@ class ProgressiveCheckTest {
 
     @Test
     void theWarmUpEndsAfterOneRoundWhenEveryRequestIsSlow() {
-        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(ProgressiveSettings.timeBudget(6), null);
+        ProgressiveCheck.Request slow = new ProgressiveCheck.Request(1, null);
         int rounds = ProgressiveCheck.warmUp(
                 List.of(slow), request -> row(0, 6, 1, ProgressiveCheck.WARM_UP_ONCE_SECONDS + 1, 1));
         assertEquals(1, rounds);
