@@ -138,8 +138,6 @@ public final class CameraPathLoader {
     }
 
     private static SceneFileException fail(String name, String text, JsonPath at, String problem) {
-        int[] place = JsonLocator.locateNearest(text, at);
-        return new SceneFileException(
-                name, place == null ? 0 : place[0], place == null ? 0 : place[1], at.toString(), problem, null);
+        return new DocumentValues(name, () -> text).fail(at, problem);
     }
 }

@@ -25,27 +25,17 @@ import lighting.PointLight;
 import lighting.SpotLight;
 import primitives.Color;
 import primitives.Double3;
-import primitives.Limits;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Transform;
 import primitives.Vector;
 import renderer.Camera;
-import renderer.ProgressiveSettings;
-import renderer.RayTracerType;
-import renderer.RenderMemory;
-import renderer.RenderSettings;
-import renderer.sampling.SamplingConfig;
-import renderer.sampling.SamplingPattern;
-import renderer.sampling.TargetShape;
 import scene.Scene;
 import sceneio.model.AmbientDocument;
 import sceneio.model.AxisDocument;
-import sceneio.model.CameraDocument;
 import sceneio.model.Coefficient;
 import sceneio.model.CylinderDocument;
-import sceneio.model.DepthOfFieldDocument;
 import sceneio.model.DirectionalLightDocument;
 import sceneio.model.GeometryDocument;
 import sceneio.model.GroupDocument;
@@ -57,8 +47,6 @@ import sceneio.model.MeshDocument;
 import sceneio.model.PlaneDocument;
 import sceneio.model.PointLightDocument;
 import sceneio.model.PolygonDocument;
-import sceneio.model.RenderDocument;
-import sceneio.model.SamplingDocument;
 import sceneio.model.SceneDocument;
 import sceneio.model.SphereDocument;
 import sceneio.model.SpotLightDocument;
@@ -71,14 +59,13 @@ import sceneio.model.Vec3;
 /**
  * Turns a {@link SceneDocument} into core objects: checks what is required, applies the defaults, loads OBJ
  * meshes and lets the core constructors validate the values. Every problem becomes a {@link SceneFileException}
- * at the JSON path of the offending value (with its line and column when the text is known); the core's
- * {@code IllegalArgumentException} messages say what is allowed, so they are kept and given a place.
+ * at the JSON path of the offending value ({@link DocumentValues}). The lights, materials and geometries are built
+ * here; the camera and the render settings by {@link CameraReader}.
  */
 final class SceneBuilder {
-    /** Largest image (pixels), as in the core's image writer: beyond it the pixel buffer cannot be allocated. */
-    private static final long MAX_PIXELS = 1L << 28;
-
     private final String file;
+    /** The document's values as core values, and its problems at their JSON paths. */
+    private final DocumentValues values;
     /** Where referenced files may be: the scene's folder tree and what the user allowed. */
     private final FileConfinement confinement;
     /** The files read besides the scene file, relative to its folder, each once. */
@@ -88,7 +75,6 @@ final class SceneBuilder {
     /** Reads the OBJ meshes with their MTL files and textures. */
     private final MeshLoader meshes;
 
-    private final Supplier<String> text;
     private final List<String> warnings = new ArrayList<>();
     /** The scene's prototypes by name, in file order, and the names an instance placed. */
     private final Map<String, Prototype> prototypes = new java.util.LinkedHashMap<>();
@@ -104,13 +90,13 @@ final class SceneBuilder {
      */
     SceneBuilder(String file, Path baseDir, Supplier<String> text, List<Path> alsoAllowed) {
         this.file = file;
-        this.text = text;
+        this.values = new DocumentValues(file, text);
         this.confinement = new FileConfinement(baseDir, alsoAllowed);
         this.textures = new TextureLoader(confinement, files);
         this.meshes = new MeshLoader(file, confinement, textures, warnings, files, new MeshLoader.Context() {
             @Override
             public SceneFileException fail(JsonPath at, String problem, Throwable cause) {
-                return SceneBuilder.this.fail(at, problem, cause);
+                return values.fail(at, problem, cause);
             }
 
             @Override
@@ -120,26 +106,26 @@ final class SceneBuilder {
 
             @Override
             public Color color(JsonPath at, Vec3 value) throws SceneFileException {
-                return SceneBuilder.this.color(at, value);
+                return values.color(at, value);
             }
         });
     }
 
     LoadedScene build(SceneDocument d, String defaultName) throws SceneFileException {
         JsonPath root = JsonPath.ROOT;
-        if (d == null) throw fail(root, "the document is null: a scene file holds one JSON object");
+        if (d == null) throw values.fail(root, "the document is null: a scene file holds one JSON object");
         if (d.version() != null && d.version() != 1) {
-            throw fail(root.field("version"), "unsupported format version " + d.version() + "; allowed: 1");
+            throw values.fail(root.field("version"), "unsupported format version " + d.version() + "; allowed: 1");
         }
         String name = d.name() != null ? d.name() : defaultName;
-        Scene scene = core(root.field("name"), () -> new Scene(name));
+        Scene scene = values.core(root.field("name"), () -> new Scene(name));
         if (d.seed() != null) scene.setSeed(d.seed());
-        if (d.background() != null) scene.setBackground(color(root.field("background"), d.background()));
+        if (d.background() != null) scene.setBackground(values.color(root.field("background"), d.background()));
         if (d.ambient() != null) scene.setAmbientLight(ambient(root.field("ambient"), d.ambient()));
         if (d.materials() != null) {
             for (Map.Entry<String, MaterialDocument> e : d.materials().entrySet()) {
                 JsonPath at = root.field("materials").field(e.getKey());
-                if (e.getKey().isBlank()) throw fail(at, "a material name must not be empty");
+                if (e.getKey().isBlank()) throw values.fail(at, "a material name must not be empty");
                 materials.put(e.getKey(), material(at, e.getValue()));
             }
         }
@@ -151,9 +137,9 @@ final class SceneBuilder {
         if (d.prototypes() != null) {
             for (Map.Entry<String, GeometryDocument> e : d.prototypes().entrySet()) {
                 JsonPath at = root.field("prototypes").field(e.getKey());
-                if (e.getKey().isBlank()) throw fail(at, "a prototype name must not be empty");
+                if (e.getKey().isBlank()) throw values.fail(at, "a prototype name must not be empty");
                 Intersectable geometry = geometry(at, e.getValue());
-                prototypes.put(e.getKey(), core(at, () -> new Prototype(e.getKey(), geometry)));
+                prototypes.put(e.getKey(), values.core(at, () -> new Prototype(e.getKey(), geometry)));
             }
         }
         if (d.geometries() != null) {
@@ -164,166 +150,42 @@ final class SceneBuilder {
             if (!placed.contains(prototype))
                 warnings.add("prototype \"" + prototype + "\" is defined but never placed");
         }
-        Camera camera = camera(d, scene);
+        Camera camera = new CameraReader(values).camera(d, scene);
         return new LoadedScene(d, scene, camera, warnings, files);
-    }
-
-    // ------------------------------------------------------------------ camera and render settings
-
-    private Camera camera(SceneDocument d, Scene scene) throws SceneFileException {
-        JsonPath root = JsonPath.ROOT;
-        CameraDocument c = d.camera();
-        if (c == null) {
-            throw fail(
-                    root,
-                    "the scene has no camera: add \"camera\": {\"location\": [x, y, z], \"lookAt\": [x, y, z],"
-                            + " \"vpDistance\": d, \"vpWidth\": w, \"vpHeight\": h}");
-        }
-        RenderDocument r = d.render();
-        if (r == null) {
-            throw fail(root, "the scene has no render settings: add \"render\": {\"width\": w, \"height\": h}");
-        }
-        JsonPath at = root.field("camera");
-        Camera.Builder b = Camera.getBuilder();
-        Point location = point(at.field("location"), required(at, "location", c.location()));
-        b.setLocation(location);
-        if ((c.lookAt() == null) == (c.direction() == null)) {
-            throw fail(at, "give exactly one of \"lookAt\" (a point to aim at) and \"direction\" (a vector)");
-        }
-        Vector to;
-        if (c.lookAt() != null) {
-            Point target = point(at.field("lookAt"), c.lookAt());
-            if (target.equals(location)) {
-                throw fail(at.field("lookAt"), "the camera cannot look at its own location " + location);
-            }
-            to = core(at.field("lookAt"), () -> target.subtract(location)); // may overflow for huge coordinates
-        } else {
-            to = vector(at.field("direction"), c.direction());
-        }
-        // Default up: +Z (the scenes' world is Z-up), or +Y when looking straight up or down.
-        Vector up = c.up() != null
-                ? vector(at.field("up"), c.up())
-                : Math.abs(to.normalize().z) > 0.999999 ? Vector.AXIS_Y : Vector.AXIS_Z;
-        core(at.field("up"), () -> b.setDirection(to, up));
-        double distance = required(at, "vpDistance", c.vpDistance());
-        double width = required(at, "vpWidth", c.vpWidth());
-        double height = required(at, "vpHeight", c.vpHeight());
-        core(at.field("vpDistance"), () -> b.setVpDistance(distance));
-        // Width first with a stand-in height, so an error names the field that is wrong.
-        core(at.field("vpWidth"), () -> b.setVpSize(width, 1));
-        core(at.field("vpHeight"), () -> b.setVpSize(width, height));
-        DepthOfFieldDocument dof = c.depthOfField();
-        if (dof != null) {
-            JsonPath dp = at.field("depthOfField");
-            double focal = required(dp, "focalDistance", dof.focalDistance());
-            double aperture = required(dp, "aperture", dof.aperture());
-            core(dp, () -> b.setDepthOfField(focal, aperture));
-            if (dof.samples() != null) {
-                core(
-                        dp.field("samples"),
-                        () -> b.setApertureSampling(
-                                new SamplingConfig(dof.samples(), TargetShape.CIRCLE, SamplingPattern.JITTERED)));
-            }
-        }
-
-        JsonPath rp = root.field("render");
-        int nX = required(rp, "width", r.width());
-        int nY = required(rp, "height", r.height());
-        if (nX < 1) throw fail(rp.field("width"), "width must be >= 1 pixel, but was " + nX);
-        if (nY < 1) throw fail(rp.field("height"), "height must be >= 1 pixel, but was " + nY);
-        if ((long) nX * nY > MAX_PIXELS) {
-            throw fail(rp, "image of " + nX + " x " + nY + " pixels is too large (at most 2^28 pixels)");
-        }
-        b.setResolution(nX, nY);
-        if (r.antiAliasing() != null) b.setSamplingConfig(sampling(rp.field("antiAliasing"), r.antiAliasing()));
-        if (r.threads() != null) {
-            int threads = r.threads();
-            if (threads < 1 || threads > Limits.maxThreads()) {
-                throw fail(rp.field("threads"), "threads must be in " + Limits.threadRange() + ", but was " + threads);
-            }
-            b.setThreads(threads);
-        }
-        RenderSettings settings = RenderSettings.DEFAULT;
-        if (r.bvh() != null) settings = settings.withBvh(r.bvh());
-        if (r.maxLevel() != null) {
-            RenderSettings s = settings;
-            settings = core(rp.field("maxLevel"), () -> s.withRecursion(r.maxLevel(), s.minAttenuation()));
-        }
-        if (r.shadowPattern() != null || r.adaptiveShadows() != null) {
-            settings = settings.withShadowSampling(
-                    r.shadowPattern() != null ? r.shadowPattern() : settings.shadowPattern(),
-                    r.adaptiveShadows() != null ? r.adaptiveShadows() : settings.adaptiveShadows());
-        }
-        if (r.glossySamples() != null) {
-            SamplingConfig glossy = core(
-                    rp.field("glossySamples"),
-                    () -> new SamplingConfig(
-                            r.glossySamples(),
-                            TargetShape.CIRCLE,
-                            RenderSettings.DEFAULT.glossySampling().getPattern()));
-            settings = settings.withGlossySampling(glossy);
-        }
-        if (r.lightCutoff() != null) {
-            RenderSettings s = settings;
-            settings = core(rp.field("lightCutoff"), () -> s.withLightCutoff(r.lightCutoff()));
-        }
-        b.setRenderSettings(settings);
-        b.setProgressive(progressive(rp, r));
-        b.setRayTracer(scene, RayTracerType.SIMPLE);
-        Camera camera = core(at, b::build);
-        // Memory last: it depends on the image, the samples, the threads and the geometry together.
-        core(rp, () -> {
-            RenderMemory.check(camera, nX, nY);
-            return camera;
-        });
-        return camera;
-    }
-
-    private SamplingConfig sampling(JsonPath at, SamplingDocument s) throws SceneFileException {
-        int samples = required(at, "samples", s.samples());
-        TargetShape shape = s.shape() != null ? s.shape() : TargetShape.RECTANGLE;
-        SamplingPattern pattern = s.pattern() != null ? s.pattern() : SamplingPattern.JITTERED;
-        SamplingConfig config = core(at.field("samples"), () -> new SamplingConfig(samples, shape, pattern));
-        if (s.adaptiveThreshold() != null) {
-            config = core(
-                    at.field("adaptiveThreshold"),
-                    () -> new SamplingConfig(samples, shape, pattern).adaptive(s.adaptiveThreshold()));
-        }
-        return config;
     }
 
     // ------------------------------------------------------------------ lights and materials
 
     private AmbientLight ambient(JsonPath at, AmbientDocument a) throws SceneFileException {
-        Color color = color(at.field("color"), required(at, "color", a.color()));
+        Color color = values.color(at.field("color"), values.required(at, "color", a.color()));
         Double3 kA = a.kA() == null ? Double3.ONE : coefficient(at.field("kA"), a.kA());
-        return core(at.field("kA"), () -> new AmbientLight(color, kA));
+        return values.core(at.field("kA"), () -> new AmbientLight(color, kA));
     }
 
     private LightSource light(JsonPath at, LightDocument light) throws SceneFileException {
-        if (light == null) throw fail(at, "null is not a light: give an object with a \"type\"");
+        if (light == null) throw values.fail(at, "null is not a light: give an object with a \"type\"");
         // Values are checked where they are used; this catches what the core rejects of their combination.
-        return core(at, () -> lightSource(at, light));
+        return values.core(at, () -> lightSource(at, light));
     }
 
     private LightSource lightSource(JsonPath at, LightDocument light) throws SceneFileException {
         if (light instanceof DirectionalLightDocument d) {
-            Color color = color(at.field("color"), required(at, "color", d.color()));
-            Vector direction = vector(at.field("direction"), required(at, "direction", d.direction()));
+            Color color = values.color(at.field("color"), values.required(at, "color", d.color()));
+            Vector direction = values.vector(at.field("direction"), values.required(at, "direction", d.direction()));
             return new DirectionalLight(color, direction);
         }
         if (light instanceof SpotLightDocument s) {
-            Color color = color(at.field("color"), required(at, "color", s.color()));
-            Point position = point(at.field("position"), required(at, "position", s.position()));
-            Vector direction = vector(at.field("direction"), required(at, "direction", s.direction()));
+            Color color = values.color(at.field("color"), values.required(at, "color", s.color()));
+            Point position = values.point(at.field("position"), values.required(at, "position", s.position()));
+            Vector direction = values.vector(at.field("direction"), values.required(at, "direction", s.direction()));
             SpotLight spot = new SpotLight(color, position, direction);
-            if (s.narrowBeam() != null) core(at.field("narrowBeam"), () -> spot.setNarrowBeam(s.narrowBeam()));
+            if (s.narrowBeam() != null) values.core(at.field("narrowBeam"), () -> spot.setNarrowBeam(s.narrowBeam()));
             attenuation(at, spot, s.kC(), s.kL(), s.kQ(), s.radius(), s.samples(), s.range());
             return spot;
         }
         PointLightDocument p = (PointLightDocument) light;
-        Color color = color(at.field("color"), required(at, "color", p.color()));
-        Point position = point(at.field("position"), required(at, "position", p.position()));
+        Color color = values.color(at.field("color"), values.required(at, "color", p.color()));
+        Point position = values.point(at.field("position"), values.required(at, "position", p.position()));
         PointLight point = new PointLight(color, position);
         attenuation(at, point, p.kC(), p.kL(), p.kQ(), p.radius(), p.samples(), p.range());
         return point;
@@ -332,41 +194,42 @@ final class SceneBuilder {
     private void attenuation(
             JsonPath at, PointLight light, Double kC, Double kL, Double kQ, Double radius, Integer n, Double range)
             throws SceneFileException {
-        if (range != null) core(at.field("range"), () -> light.setRange(range));
-        if (kC != null) core(at.field("kC"), () -> light.setKc(kC));
-        if (kL != null) core(at.field("kL"), () -> light.setKl(kL));
-        if (kQ != null) core(at.field("kQ"), () -> light.setKq(kQ));
-        if (radius != null) core(at.field("radius"), () -> light.setRadius(radius));
-        if (n != null) core(at.field("samples"), () -> light.setNumSamples(n));
+        if (range != null) values.core(at.field("range"), () -> light.setRange(range));
+        if (kC != null) values.core(at.field("kC"), () -> light.setKc(kC));
+        if (kL != null) values.core(at.field("kL"), () -> light.setKl(kL));
+        if (kQ != null) values.core(at.field("kQ"), () -> light.setKq(kQ));
+        if (radius != null) values.core(at.field("radius"), () -> light.setRadius(radius));
+        if (n != null) values.core(at.field("samples"), () -> light.setNumSamples(n));
         if (!(light.getKc() > 0) && !(light.getKl() > 0) && !(light.getKq() > 0)) {
-            throw fail(at, "attenuation kC + kL d + kQ d^2 is zero: at least one of kC, kL, kQ must be positive");
+            throw values.fail(
+                    at, "attenuation kC + kL d + kQ d^2 is zero: at least one of kC, kL, kQ must be positive");
         }
     }
 
     private Material material(JsonPath at, MaterialDocument m) throws SceneFileException {
-        if (m == null) throw fail(at, "null is not a material: give an object such as {\"kD\": 0.5}");
+        if (m == null) throw values.fail(at, "null is not a material: give an object such as {\"kD\": 0.5}");
         Material material = new Material();
         if (m.kA() != null) material.setKa(coefficient(at.field("kA"), m.kA()));
         if (m.kD() != null) material.setKd(coefficient(at.field("kD"), m.kD()));
         if (m.kS() != null) material.setKs(coefficient(at.field("kS"), m.kS()));
-        if (m.shininess() != null) core(at.field("shininess"), () -> material.setShininess(m.shininess()));
+        if (m.shininess() != null) values.core(at.field("shininess"), () -> material.setShininess(m.shininess()));
         if (m.kR() != null) material.setKr(coefficient(at.field("kR"), m.kR()));
         if (m.kT() != null) material.setKt(coefficient(at.field("kT"), m.kT()));
         if (m.indexOfRefraction() != null) {
-            core(at.field("indexOfRefraction"), () -> material.setIndexOfRefraction(m.indexOfRefraction()));
+            values.core(at.field("indexOfRefraction"), () -> material.setIndexOfRefraction(m.indexOfRefraction()));
         }
-        if (m.roughness() != null) core(at.field("roughness"), () -> material.setRoughness(m.roughness()));
+        if (m.roughness() != null) values.core(at.field("roughness"), () -> material.setRoughness(m.roughness()));
         if (m.kDMap() != null) material.setKdMap(texture(at.field("kDMap"), m.kDMap()));
         return material;
     }
 
     private primitives.Texture texture(JsonPath at, TextureDocument t) throws SceneFileException {
-        String name = required(at, "file", t.file());
+        String name = values.required(at, "file", t.file());
         try {
             return textures.load(
                     name, meshes.displayName(name), t.wrap() == null ? primitives.Texture.Wrap.REPEAT : t.wrap());
         } catch (TextureLoader.TextureException e) {
-            throw fail(at.field("file"), e.getMessage(), e);
+            throw values.fail(at.field("file"), e.getMessage(), e);
         }
     }
 
@@ -374,7 +237,7 @@ final class SceneBuilder {
     private Double3 coefficient(JsonPath at, Coefficient c) throws SceneFileException {
         if (c.r() < 0 || c.g() < 0 || c.b() < 0) {
             String value = c.isUniform() ? String.valueOf(c.r()) : "[" + c.r() + ", " + c.g() + ", " + c.b() + "]";
-            throw fail(at, "coefficients must be zero or positive (a number or [r, g, b]), but was " + value);
+            throw values.fail(at, "coefficients must be zero or positive (a number or [r, g, b]), but was " + value);
         }
         return new Double3(c.r(), c.g(), c.b());
     }
@@ -388,15 +251,15 @@ final class SceneBuilder {
     }
 
     private Intersectable geometry(JsonPath at, GeometryDocument g) throws SceneFileException {
-        if (g == null) throw fail(at, "null is not a geometry: give an object with a \"type\"");
+        if (g == null) throw values.fail(at, "null is not a geometry: give an object with a \"type\"");
         if (g instanceof MeshDocument mesh) return meshes.load(at, mesh);
         if (g instanceof GroupDocument group) {
-            return group(at.field("geometries"), required(at, "geometries", group.geometries()));
+            return group(at.field("geometries"), values.required(at, "geometries", group.geometries()));
         }
         if (g instanceof InstanceDocument instance) return instance(at, instance);
-        Geometry geometry = core(at, () -> shape(at, g));
+        Geometry geometry = values.core(at, () -> shape(at, g));
         SurfaceDocument surface = (SurfaceDocument) g;
-        if (surface.emission() != null) geometry.setEmission(color(at.field("emission"), surface.emission()));
+        if (surface.emission() != null) geometry.setEmission(values.color(at.field("emission"), surface.emission()));
         if (surface.material() != null) geometry.setMaterial(material(at.field("material"), surface.material()));
         if (geometry.getMaterial().getKdMap() != null) {
             warnings.add(file + ": " + at + ": a "
@@ -407,31 +270,17 @@ final class SceneBuilder {
         return geometry;
     }
 
-    /** Progressive sampling from {@code targetError} or {@code timeBudget}, or null for fixed sampling. */
-    private ProgressiveSettings progressive(JsonPath rp, RenderDocument r) throws SceneFileException {
-        if (r.targetError() != null && r.timeBudget() != null) {
-            throw fail(rp.field("timeBudget"), "give either \"targetError\" or \"timeBudget\", not both");
-        }
-        if (r.targetError() != null) {
-            return core(rp.field("targetError"), () -> ProgressiveSettings.targetError(r.targetError()));
-        }
-        if (r.timeBudget() != null) {
-            return core(rp.field("timeBudget"), () -> ProgressiveSettings.timeBudget(r.timeBudget()));
-        }
-        return null;
-    }
-
     private Instance instance(JsonPath at, InstanceDocument d) throws SceneFileException {
-        String name = required(at, "of", d.of());
+        String name = values.required(at, "of", d.of());
         Prototype prototype = prototypes.get(name);
         if (prototype == null) {
-            throw fail(
+            throw values.fail(
                     at.field("of"),
                     "unknown prototype \"" + name + "\"; defined in \"prototypes\": "
                             + (prototypes.isEmpty() ? "none" : String.join(", ", new TreeSet<>(prototypes.keySet()))));
         }
         placed.add(name);
-        Transform transform = InstanceTransforms.read(at, d, this::fail);
+        Transform transform = InstanceTransforms.read(at, d, values::fail);
         return new Instance(prototype, transform);
     }
 
@@ -439,7 +288,7 @@ final class SceneBuilder {
         if (ref.inline() != null) return material(at, ref.inline());
         Material named = materials.get(ref.name());
         if (named == null) {
-            throw fail(
+            throw values.fail(
                     at,
                     "unknown material \"" + ref.name() + "\"; defined in \"materials\": "
                             + (materials.isEmpty() ? "none" : String.join(", ", new TreeSet<>(materials.keySet()))));
@@ -449,110 +298,46 @@ final class SceneBuilder {
 
     private Geometry shape(JsonPath at, GeometryDocument g) throws SceneFileException {
         if (g instanceof SphereDocument s) {
-            Point center = point(at.field("center"), required(at, "center", s.center()));
-            double radius = required(at, "radius", s.radius());
-            return core(at.field("radius"), () -> new Sphere(center, radius));
+            Point center = values.point(at.field("center"), values.required(at, "center", s.center()));
+            double radius = values.required(at, "radius", s.radius());
+            return values.core(at.field("radius"), () -> new Sphere(center, radius));
         }
         if (g instanceof PlaneDocument p) {
-            Point point = point(at.field("point"), required(at, "point", p.point()));
-            Vector normal = vector(at.field("normal"), required(at, "normal", p.normal()));
+            Point point = values.point(at.field("point"), values.required(at, "point", p.point()));
+            Vector normal = values.vector(at.field("normal"), values.required(at, "normal", p.normal()));
             return new Plane(point, normal);
         }
         if (g instanceof TriangleDocument t) {
-            Point[] v = points(at.field("vertices"), required(at, "vertices", t.vertices()));
+            Point[] v = values.points(at.field("vertices"), values.required(at, "vertices", t.vertices()));
             if (v.length != 3) {
-                throw fail(
+                throw values.fail(
                         at.field("vertices"),
                         "a triangle needs exactly 3 vertices, but has " + v.length + " (use \"polygon\" for more)");
             }
-            return core(at.field("vertices"), () -> new Triangle(v[0], v[1], v[2]));
+            return values.core(at.field("vertices"), () -> new Triangle(v[0], v[1], v[2]));
         }
         if (g instanceof PolygonDocument p) {
-            Point[] v = points(at.field("vertices"), required(at, "vertices", p.vertices()));
-            return core(at.field("vertices"), () -> new Polygon(v));
+            Point[] v = values.points(at.field("vertices"), values.required(at, "vertices", p.vertices()));
+            return values.core(at.field("vertices"), () -> new Polygon(v));
         }
         if (g instanceof CylinderDocument c) {
-            double radius = required(at, "radius", c.radius());
-            Ray axis = axis(at.field("axis"), required(at, "axis", c.axis()));
-            double height = required(at, "height", c.height());
-            core(at.field("radius"), () -> new Tube(radius, axis));
-            return core(at.field("height"), () -> new Cylinder(radius, axis, height));
+            double radius = values.required(at, "radius", c.radius());
+            Ray axis = axis(at.field("axis"), values.required(at, "axis", c.axis()));
+            double height = values.required(at, "height", c.height());
+            values.core(at.field("radius"), () -> new Tube(radius, axis));
+            return values.core(at.field("height"), () -> new Cylinder(radius, axis, height));
         }
         if (g instanceof TubeDocument t) {
-            double radius = required(at, "radius", t.radius());
-            Ray axis = axis(at.field("axis"), required(at, "axis", t.axis()));
-            return core(at.field("radius"), () -> new Tube(radius, axis));
+            double radius = values.required(at, "radius", t.radius());
+            Ray axis = axis(at.field("axis"), values.required(at, "axis", t.axis()));
+            return values.core(at.field("radius"), () -> new Tube(radius, axis));
         }
         throw new IllegalStateException("meshes are loaded by MeshLoader");
     }
 
     private Ray axis(JsonPath at, AxisDocument a) throws SceneFileException {
-        Point origin = point(at.field("origin"), required(at, "origin", a.origin()));
-        Vector direction = vector(at.field("direction"), required(at, "direction", a.direction()));
+        Point origin = values.point(at.field("origin"), values.required(at, "origin", a.origin()));
+        Vector direction = values.vector(at.field("direction"), values.required(at, "direction", a.direction()));
         return new Ray(origin, direction);
-    }
-
-    // ------------------------------------------------------------------ values
-
-    private Point[] points(JsonPath at, List<Vec3> vertices) throws SceneFileException {
-        Point[] points = new Point[vertices.size()];
-        for (int i = 0; i < points.length; i++) {
-            points[i] = point(at.index(i), required(at.index(i), vertices.get(i)));
-        }
-        return points;
-    }
-
-    private Point point(JsonPath at, Vec3 v) throws SceneFileException {
-        return core(at, () -> new Point(v.x(), v.y(), v.z()));
-    }
-
-    private Vector vector(JsonPath at, Vec3 v) throws SceneFileException {
-        return core(at, () -> new Vector(v.x(), v.y(), v.z()));
-    }
-
-    private Color color(JsonPath at, Vec3 v) throws SceneFileException {
-        if (v.x() < 0 || v.y() < 0 || v.z() < 0) {
-            throw fail(
-                    at,
-                    "colour channels must be >= 0 (0..255 is the usual range), but were [" + v.x() + ", " + v.y() + ", "
-                            + v.z() + "]");
-        }
-        return new Color(v.x(), v.y(), v.z());
-    }
-
-    private <T> T required(JsonPath parent, String field, T value) throws SceneFileException {
-        if (value == null) throw fail(parent, "missing required field \"" + field + "\"");
-        return value;
-    }
-
-    private <T> T required(JsonPath at, T value) throws SceneFileException {
-        if (value == null) throw fail(at, "null is not allowed here");
-        return value;
-    }
-
-    /** A core construction whose IllegalArgument/IllegalState message is reported at {@code at}. */
-    private <T> T core(JsonPath at, CoreCall<T> call) throws SceneFileException {
-        try {
-            return call.get();
-        } catch (IllegalArgumentException | IllegalStateException e) {
-            throw fail(at, e.getMessage() == null ? e.toString() : e.getMessage(), e);
-        }
-    }
-
-    /** A constructor or setter of the core (or a step of the builder that calls some). */
-    @FunctionalInterface
-    private interface CoreCall<T> {
-        T get() throws SceneFileException;
-    }
-
-    private SceneFileException fail(JsonPath at, String problem) {
-        return fail(at, problem, null);
-    }
-
-    private SceneFileException fail(JsonPath at, String problem, Throwable cause) {
-        String source = text == null ? null : text.get();
-        int[] place = source == null ? null : JsonLocator.locateNearest(source, at);
-        return new SceneFileException(
-                file, place == null ? 0 : place[0], place == null ? 0 : place[1], at.toString(), problem, cause);
     }
 }
