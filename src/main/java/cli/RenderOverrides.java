@@ -116,8 +116,8 @@ public final class RenderOverrides implements Serializable {
         }
     }
 
-    /** Longest image side: an image holds at most 2^28 pixels (the loader checks the product). */
-    static final int MAX_SIDE = 1 << 28;
+    /** Longest image side: an image holds at most {@link Limits#MAX_PIXELS} pixels (the loader checks the product). */
+    static final int MAX_SIDE = Limits.MAX_PIXELS;
 
     static void checkRange(String option, Integer value, int max) throws BadInputException {
         if (value != null && (value < 1 || value > max)) {

@@ -19,6 +19,12 @@ public final class Limits {
      */
     public static final int MAX_PRIMITIVES = 1 << 27;
 
+    /**
+     * Most pixels of one image: 2^28, so that its three colour channels fit one Java array (3 x 2^28 doubles, below
+     * 2^31 elements).
+     */
+    public static final int MAX_PIXELS = 1 << 28;
+
     /** Most render threads on any machine: beyond this, threads only add switching and stacks. */
     public static final int MAX_THREADS = 256;
 

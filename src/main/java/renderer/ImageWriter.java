@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import primitives.Color;
+import primitives.Limits;
 
 /**
  * An image of linear floating-point pixels that is written once, as PNG, with each channel clamped to 0..255
@@ -31,7 +32,7 @@ public class ImageWriter {
         if (nX < 1 || nY < 1) {
             throw new IllegalArgumentException("image resolution must be positive, but was " + nX + " x " + nY);
         }
-        if ((long) nX * nY > 1L << 28) {
+        if ((long) nX * nY > Limits.MAX_PIXELS) {
             throw new IllegalArgumentException(
                     "image of " + nX + " x " + nY + " pixels is too large (limit 2^28 pixels)");
         }

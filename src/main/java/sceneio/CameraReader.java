@@ -24,9 +24,6 @@ import sceneio.model.SceneDocument;
  * JSON path.
  */
 final class CameraReader {
-    /** Largest image (pixels), as in the core's image writer: beyond it the pixel buffer cannot be allocated. */
-    private static final long MAX_PIXELS = 1L << 28;
-
     private final DocumentValues values;
 
     CameraReader(DocumentValues values) {
@@ -95,7 +92,7 @@ final class CameraReader {
         int nY = values.required(rp, "height", r.height());
         if (nX < 1) throw values.fail(rp.field("width"), "width must be >= 1 pixel, but was " + nX);
         if (nY < 1) throw values.fail(rp.field("height"), "height must be >= 1 pixel, but was " + nY);
-        if ((long) nX * nY > MAX_PIXELS) {
+        if ((long) nX * nY > Limits.MAX_PIXELS) {
             throw values.fail(rp, "image of " + nX + " x " + nY + " pixels is too large (at most 2^28 pixels)");
         }
         b.setResolution(nX, nY);
