@@ -9,7 +9,7 @@ import renderer.Camera;
  * command has reported it and closed this guard (at most {@link #GRACE_MILLIS}), so the user reads "render
  * cancelled" instead of a silent exit. Temporary image files are removed by {@code AtomicFile}'s own hook.
  */
-final class CancelOnShutdown implements AutoCloseable {
+final class CancelOnShutdown implements RenderHost.CancelGuard {
     /** Longest a shutdown waits for the render threads to stop and the command to report. */
     static final long GRACE_MILLIS = 10_000;
 
@@ -25,7 +25,8 @@ final class CancelOnShutdown implements AutoCloseable {
     }
 
     /** Whether a shutdown began while this guard was open: then the render's result must not be written. */
-    boolean signalled() {
+    @Override
+    public boolean signalled() {
         return signalled;
     }
 

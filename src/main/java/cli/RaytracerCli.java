@@ -1,13 +1,15 @@
 package cli;
 
 import java.io.PrintWriter;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import sceneio.SceneFileException;
 
 /**
  * The {@code raytracer} command line: {@code raytracer render scene.json -o out.png}, {@code --help},
- * {@code --version}. Exit codes are in {@link ExitCodes}: 0 success, 1 render failure, 2 bad input.
+ * {@code --version}, and {@code raytracer --daemon render ...} to render in a JVM that stays warm between commands
+ * ({@link RenderDaemon}). Exit codes are in {@link ExitCodes}: 0 success, 1 render failure, 2 bad input.
  *
  * <p>Subcommands: {@code render}, {@code report} (accuracy against time), {@code robustness} (hard-case metrics),
  * {@code benchmark bvh|planning|effects}. To add one, write a picocli {@code @Command} class that
@@ -32,6 +34,19 @@ public final class RaytracerCli implements Runnable {
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;
 
+    /** Shown in the usage; a first {@code --daemon} never reaches picocli ({@link #main}), so here it is misplaced. */
+    @CommandLine.Option(
+            names = DaemonClient.OPTION,
+            description = "first on the line: run the render command in a background JVM that stays warm between"
+                    + " commands, so that renders after the first skip the JIT's start (started on first use; ends"
+                    + " after 10 idle minutes or on --daemon stop; docs/CLI.md)")
+    void daemon(boolean unused) {
+        throw new CommandLine.ParameterException(
+                spec.commandLine(),
+                DaemonClient.OPTION + " must be the first argument of the raytracer command (" + DaemonClient.OPTION
+                        + " render scene.json ...); from Java, render in your own JVM instead");
+    }
+
     /** Without a subcommand: the usage, and exit code 2 (nothing was done). */
     @Override
     public void run() {
@@ -39,12 +54,15 @@ public final class RaytracerCli implements Runnable {
     }
 
     /**
-     * Runs the command line and exits with its code when it is not 0.
+     * Runs the command line and exits with its code when it is not 0. With {@code --daemon} first, the command runs
+     * in the render daemon ({@link DaemonClient}), and this JVM loads neither picocli nor the renderer.
      *
      * @param args the command-line arguments
      */
     public static void main(String[] args) {
-        int code = run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true));
+        int code = args.length > 0 && args[0].equals(DaemonClient.OPTION)
+                ? DaemonClient.main(List.of(args).subList(1, args.length))
+                : run(args, new PrintWriter(System.out, true), new PrintWriter(System.err, true));
         // Exit only on failure: on success, returning lets `mvn exec:java` finish normally.
         if (code != ExitCodes.OK) System.exit(code);
     }

@@ -81,6 +81,14 @@ public final class RenderCommand implements Callable<Integer> {
             description = "print only errors (no progress, no statistics)")
     private boolean quiet;
 
+    /** Where this command runs: its own JVM unless the render daemon hosts it for a client. */
+    private RenderHost host = RenderHost.LOCAL;
+
+    /** Runs this command for a client of the render daemon instead of in its own JVM. */
+    void hostedBy(RenderHost daemonHost) {
+        this.host = daemonHost;
+    }
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -107,12 +115,13 @@ public final class RenderCommand implements Callable<Integer> {
 
         Camera camera = loaded.camera();
         String unchanged = existed ? "; " + Printable.message(target.toString()) + " was left unchanged" : "";
-        // Ctrl-C or SIGTERM during the render cancels it; this thread reports it before the JVM exits.
-        CancelOnShutdown guard = new CancelOnShutdown(camera);
-        try (RenderProgress listener = RenderProgress.create(quiet ? ProgressMode.NONE : progress, System.err, err)) {
+        // Ctrl-C or SIGTERM during the render cancels it (in the daemon: the client's); this thread reports it.
+        RenderHost.CancelGuard guard = host.guard(camera);
+        ProgressMode mode = quiet ? ProgressMode.NONE : progress;
+        try (RenderProgress listener = RenderProgress.create(mode, host.terminal(), host.interactive(), err)) {
             camera.setProgressListener(listener);
             camera.renderImage();
-            if (guard.signalled()) throw new CancellationException("the JVM is shutting down");
+            if (guard.signalled()) throw new CancellationException("cancelled by the user");
         } catch (CancellationException e) {
             err.println("render cancelled: no image written" + unchanged);
             err.flush();

@@ -1,6 +1,5 @@
 package cli;
 
-import java.io.Console;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
@@ -15,10 +14,17 @@ import renderer.ProgressListener;
  * created on the first tile because only then is the tile count known.
  */
 abstract class RenderProgress implements ProgressListener, AutoCloseable {
-    /** A listener for {@code mode}; AUTO picks the bar when a console is attached (stdin and stdout a terminal). */
-    static RenderProgress create(ProgressMode mode, PrintStream stderr, PrintWriter lines) {
+    /**
+     * A listener for {@code mode}; AUTO picks the bar when a person watches the terminal ({@link Terminal}).
+     *
+     * @param mode the mode asked for
+     * @param stderr where a bar is redrawn
+     * @param interactive whether a person watches {@code stderr}
+     * @param lines where progress lines are printed
+     */
+    static RenderProgress create(ProgressMode mode, PrintStream stderr, boolean interactive, PrintWriter lines) {
         ProgressMode m = mode;
-        if (m == ProgressMode.AUTO) m = interactive() ? ProgressMode.BAR : ProgressMode.LINES;
+        if (m == ProgressMode.AUTO) m = interactive ? ProgressMode.BAR : ProgressMode.LINES;
         return switch (m) {
             case BAR -> new Bar(stderr);
             case LINES -> new Lines(lines);
@@ -28,20 +34,6 @@ abstract class RenderProgress implements ProgressListener, AutoCloseable {
 
     @Override
     public abstract void close();
-
-    /**
-     * Whether a person is watching a terminal. Java 17 has a console only when stdin and stdout are terminals;
-     * from Java 22 a console may exist when redirected, so its {@code isTerminal()} (absent before 22) decides.
-     */
-    static boolean interactive() {
-        Console console = System.console();
-        if (console == null || "dumb".equals(System.getenv("TERM"))) return false;
-        try {
-            return (Boolean) Console.class.getMethod("isTerminal").invoke(console);
-        } catch (ReflectiveOperationException | RuntimeException e) {
-            return true; // Java 17 to 21: a console means a terminal
-        }
-    }
 
     /** Redraws an ASCII bar in place. */
     private static final class Bar extends RenderProgress {
