@@ -1,7 +1,7 @@
 package benchmark;
 
+import cli.JavaLaunch;
 import java.awt.image.BufferedImage;
-import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -27,7 +27,9 @@ import sceneio.SceneLoader;
  * area light at 3x3 to 17x17 lights (its own "Trace Time" and shadow-ray count) and a converged 33x33 reference; this
  * library renders to RMSEs 4, 2 and 1 with progressive sampling (the target asked lowered in 2% steps until the 8-bit
  * image's measured error reaches the one wanted), timed as its command line prints it (a new
- * JVM per render) and in a warm JVM (median of 5), and a converged reference (4,096 shadow rays per pixel). Each
+ * JVM per render), through {@code --daemon} (the render daemon's first render and later ones, with the client's time
+ * from start to exit, beside POV-Ray's) and in a warm JVM (median of 5), and a converged reference (4,096 shadow
+ * rays per pixel). Each
  * renderer is measured against its own reference, on the 8-bit images. Needs {@code povray} on the PATH;
  * {@code raytracer benchmark povray [output folder]}.
  */
@@ -36,6 +38,8 @@ public final class PovRayComparison {
     private static final Path POV = Path.of("scenes/povray/soft-shadow.pov");
     private static final double[] TARGETS = {4, 2, 1};
     private static final int[] POV_LIGHTS = {3, 5, 9, 17};
+    private static final int DAEMON_RUNS = 5;
+    private static final Pattern RENDER_TIME = Pattern.compile("render: ([0-9.]+) s wall \\(([0-9.]+) s preparing\\)");
 
     private PovRayComparison() {}
 
@@ -51,13 +55,24 @@ public final class PovRayComparison {
         Files.createDirectories(out);
         System.out.println("POV-Ray (adaptive 1, jitter, circular orient; 1 thread), against its 33x33 reference:\n");
         BufferedImage povReference = povray(out, 33, -1, 0).image;
-        System.out.println("| lights | shadow rays | trace time (s) | RMSE |\n|---:|---:|---:|---:|");
+        System.out.println(
+                "| lights | shadow rays | trace time (s) | from start to exit (s) | RMSE |\n|---:|---:|---:|---:|---:|");
         List<double[]> povCurve = new ArrayList<>();
+        List<double[]> povWallCurve = new ArrayList<>();
         for (int n : POV_LIGHTS) {
             PovRun r = povray(out, n, 1, 1);
             double error = rmse(r.image, povReference);
             povCurve.add(new double[] {r.seconds, error});
-            System.out.printf(Locale.ROOT, "| %dx%d | %,d | %.3f | %.3f |%n", n, n, r.shadowRays, r.seconds, error);
+            povWallCurve.add(new double[] {r.wall, error});
+            System.out.printf(
+                    Locale.ROOT,
+                    "| %dx%d | %,d | %.3f | %.3f | %.3f |%n",
+                    n,
+                    n,
+                    r.shadowRays,
+                    r.seconds,
+                    r.wall,
+                    error);
         }
         BufferedImage reference = referenceImage(out);
         System.out.println(
@@ -66,8 +81,10 @@ public final class PovRayComparison {
                 "| RMSE to reach | target asked | measured RMSE | predicted | shadow rays | command-line time (s) |"
                         + " of which preparing (s) | warm JVM (s) | POV-Ray's time to that error (s) |"
                         + "\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+        List<String> daemonRows = new ArrayList<>();
         for (double target : TARGETS) {
             double asked = targetAskedFor(target, reference);
+            DaemonTimes daemon = daemonSeconds(asked, out);
             CommandLineTime cli = commandLineSeconds(asked, out);
             double[] warm = new double[5];
             Camera camera = null;
@@ -89,7 +106,23 @@ public final class PovRayComparison {
                     cli.preparing(),
                     warm[warm.length / 2],
                     timeTo(povCurve, error));
+            daemonRows.add(String.format(
+                    Locale.ROOT,
+                    "| %.0f | %.3f | %.3f | %.3f | %.3f | %s | %s |",
+                    target,
+                    cli.wall(),
+                    daemon.first(),
+                    daemon.render(),
+                    daemon.wall(),
+                    timeTo(povCurve, error),
+                    timeTo(povWallCurve, error)));
         }
+        System.out.println("\nThe command line with --daemon (the same renders; the daemon started afresh for each"
+                + " error, its first render, then the median of " + DAEMON_RUNS + " more):\n");
+        System.out.println("| RMSE to reach | without the daemon, from start to exit (s) | daemon's first render (s)"
+                + " | later renders (s) | client from start to exit (s) | POV-Ray's time to that error (s)"
+                + " | POV-Ray from start to exit (s) |\n|---:|---:|---:|---:|---:|---:|---:|");
+        daemonRows.forEach(System.out::println);
     }
 
     /**
@@ -130,59 +163,78 @@ public final class PovRayComparison {
      * The render time the command line prints and the part of it spent preparing the scene (its accelerator and
      * effect plan; POV-Ray prints the like of it apart, as its parse and bounding times, outside its trace time).
      */
-    private record CommandLineTime(double render, double preparing) {}
+    private record CommandLineTime(double render, double preparing, double wall) {}
 
     /** The render time the command line prints, for a render in a JVM of its own. */
     private static CommandLineTime commandLineSeconds(double target, Path out)
             throws IOException, InterruptedException {
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder(
-                        java,
-                        "--add-modules",
-                        "jdk.incubator.vector",
-                        "-cp",
-                        classPath(),
-                        "cli.RaytracerCli",
-                        "render",
-                        SCENE.toString(),
-                        "-o",
-                        out.resolve(String.format(Locale.ROOT, "ours-%.3f.png", target))
-                                .toString(),
-                        "--threads",
-                        "1",
-                        "--target-error",
-                        String.valueOf(target))
-                .redirectErrorStream(true)
-                .start();
-        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        p.waitFor();
-        Matcher m = Pattern.compile("render: ([0-9.]+) s wall \\(([0-9.]+) s preparing\\)")
-                .matcher(text);
-        if (!m.find()) throw new IOException("no render time in the command line's output:\n" + text);
-        return new CommandLineTime(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)));
+        Run run = commandLine(renderArgs(target, out, false));
+        Matcher m = RENDER_TIME.matcher(run.output());
+        if (!m.find()) throw new IOException("no render time in the command line's output:\n" + run.output());
+        return new CommandLineTime(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)), run.wall());
     }
 
     /**
-     * The class path of this program: the loader's URLs under {@code mvn exec:java} (which loads the project in a
-     * class loader of its own), else the JVM's class path.
+     * Renders through {@code --daemon}: the daemon's first render (the daemon stopped before it, so started afresh)
+     * and the medians of {@value #DAEMON_RUNS} more, as printed and as the client's time from start to exit.
      */
-    private static String classPath() {
-        if (Thread.currentThread().getContextClassLoader() instanceof java.net.URLClassLoader loader) {
-            StringBuilder path = new StringBuilder();
-            for (java.net.URL url : loader.getURLs()) {
-                try {
-                    if (path.length() > 0) path.append(File.pathSeparator);
-                    path.append(Path.of(url.toURI()));
-                } catch (java.net.URISyntaxException e) {
-                    throw new IllegalStateException("class path entry " + url + " is not a file", e);
-                }
-            }
-            if (path.length() > 0) return path.toString();
+    private record DaemonTimes(double first, double render, double wall) {}
+
+    private static DaemonTimes daemonSeconds(double target, Path out) throws IOException, InterruptedException {
+        commandLine(List.of("--daemon", "stop"));
+        double first = printedRender(commandLine(renderArgs(target, out, true)).output());
+        double[] render = new double[DAEMON_RUNS];
+        double[] wall = new double[DAEMON_RUNS];
+        for (int i = 0; i < DAEMON_RUNS; i++) {
+            Run run = commandLine(renderArgs(target, out, true));
+            render[i] = printedRender(run.output());
+            wall[i] = run.wall();
         }
-        return System.getProperty("java.class.path");
+        commandLine(List.of("--daemon", "stop"));
+        Arrays.sort(render);
+        Arrays.sort(wall);
+        return new DaemonTimes(first, render[DAEMON_RUNS / 2], wall[DAEMON_RUNS / 2]);
     }
 
-    private record PovRun(BufferedImage image, double seconds, long shadowRays) {}
+    private static List<String> renderArgs(double target, Path out, boolean daemon) {
+        List<String> args = new ArrayList<>();
+        if (daemon) args.add("--daemon");
+        args.addAll(List.of(
+                "render",
+                SCENE.toString(),
+                "-o",
+                out.resolve(String.format(Locale.ROOT, "ours-%.3f.png", target)).toString(),
+                "--threads",
+                "1",
+                "--target-error",
+                String.valueOf(target)));
+        return args;
+    }
+
+    private static double printedRender(String text) throws IOException {
+        Matcher m = RENDER_TIME.matcher(text);
+        if (!m.find()) throw new IOException("no render time in the command line's output:\n" + text);
+        return Double.parseDouble(m.group(1));
+    }
+
+    /** A command line's output (stdout and stderr) and its time from start to exit. */
+    private record Run(String output, double wall) {}
+
+    /** Runs the command line in a JVM of its own ({@link JavaLaunch}: also under {@code mvn exec:java}). */
+    private static Run commandLine(List<String> args) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Process p = new ProcessBuilder(JavaLaunch.ofThisProgram().command("cli.RaytracerCli", args))
+                .redirectErrorStream(true)
+                .start();
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        int code = p.waitFor();
+        double wall = (System.nanoTime() - start) * 1e-9;
+        if (code != 0) throw new IOException("the command line failed (exit " + code + "):\n" + text);
+        return new Run(text, wall);
+    }
+
+    /** A POV-Ray render: its image, its printed trace time, its shadow rays, and its time from start to exit. */
+    private record PovRun(BufferedImage image, double seconds, long shadowRays, double wall) {}
 
     private static PovRun povray(Path out, int lights, int adaptive, int jitter)
             throws IOException, InterruptedException {
@@ -202,6 +254,7 @@ public final class PovRayComparison {
                         "File_Gamma=1.0")
                 .redirectErrorStream(true);
         Process p;
+        long start = System.nanoTime();
         try {
             p = povray.start();
         } catch (IOException e) {
@@ -211,11 +264,12 @@ public final class PovRayComparison {
         }
         String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         if (p.waitFor() != 0) throw new IOException("povray failed:\n" + text);
+        double wall = (System.nanoTime() - start) * 1e-9;
         Matcher time = Pattern.compile("Trace Time:.*\\(([0-9.]+) seconds\\)").matcher(text);
         Matcher rays = Pattern.compile("Shadow Ray Tests:\\s+([0-9]+)").matcher(text);
         if (!time.find() || !rays.find()) throw new IOException("no trace time in POV-Ray's output:\n" + text);
         return new PovRun(
-                ImageIO.read(image.toFile()), Double.parseDouble(time.group(1)), Long.parseLong(rays.group(1)));
+                ImageIO.read(image.toFile()), Double.parseDouble(time.group(1)), Long.parseLong(rays.group(1)), wall);
     }
 
     /** RMSE over pixels and channels of two 8-bit images (0..255 scale). */
