@@ -14,6 +14,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * {@code raytracer --daemon render ...}: runs the render command in the render daemon ({@link RenderDaemon}),
@@ -105,7 +106,8 @@ final class DaemonClient {
     /** Copies the daemon's frames to stdout and stderr until its exit code; Ctrl-C meanwhile cancels the render. */
     private int relay(SocketChannel channel) throws IOException {
         CountDownLatch answered = new CountDownLatch(1);
-        Thread cancel = new Thread(() -> cancelAndWait(channel, answered), "cancel-daemon-render");
+        AtomicBoolean running = new AtomicBoolean();
+        Thread cancel = new Thread(() -> cancelAndWait(channel, running, answered), "cancel-daemon-render");
         Runtime.getRuntime().addShutdownHook(cancel);
         try {
             while (true) {
@@ -117,6 +119,10 @@ final class DaemonClient {
                 if (kind == DaemonProtocol.EXIT) {
                     answered.countDown();
                     return body.getInt();
+                }
+                if (kind == DaemonProtocol.RUNNING) {
+                    running.set(true);
+                    continue;
                 }
                 OutputStream target = kind == DaemonProtocol.OUT ? out : err;
                 target.write(body.array(), 0, length);
@@ -135,11 +141,15 @@ final class DaemonClient {
         }
     }
 
-    /** In a shutdown (Ctrl-C): asks the daemon to cancel, and holds the exit until its report has been relayed. */
-    private static void cancelAndWait(SocketChannel channel, CountDownLatch answered) {
+    /**
+     * In a shutdown (Ctrl-C): asks the daemon to cancel, and holds the exit until its report has been relayed. A
+     * request still waiting for its turn is not waited for: the daemon finds the connection closed when it takes it,
+     * and cancels at once.
+     */
+    private static void cancelAndWait(SocketChannel channel, AtomicBoolean running, CountDownLatch answered) {
         try {
             DaemonProtocol.writeFully(channel, ByteBuffer.wrap(new byte[] {DaemonProtocol.CANCEL}));
-            answered.await(CancelOnShutdown.GRACE_MILLIS, TimeUnit.MILLISECONDS);
+            if (running.get()) answered.await(CancelOnShutdown.GRACE_MILLIS, TimeUnit.MILLISECONDS);
         } catch (IOException | InterruptedException gone) {
             // the daemon is gone or the wait was cut short: nothing more to relay
         }

@@ -18,8 +18,9 @@ import java.util.List;
  * <ul>
  *   <li>The client sends one request: its length, then the protocol's magic number, the kind (render or stop),
  *       the client's working folder, whether a person watches its terminal, and the command's arguments.
- *   <li>The daemon answers with frames: a kind byte ({@link #OUT}, {@link #ERR} or {@link #EXIT}), a length, and
- *       the bytes (UTF-8 text for stdout and stderr, the exit code for {@link #EXIT}, always the last).
+ *   <li>The daemon answers with frames: a kind byte ({@link #RUNNING}, always the first; {@link #OUT}, {@link #ERR};
+ *       {@link #EXIT}, always the last), a length, and the bytes (none for {@link #RUNNING}, UTF-8 text for stdout and
+ *       stderr, the exit code for {@link #EXIT}).
  *   <li>While the command runs, one byte {@link #CANCEL} from the client, or its end of the connection, cancels it.
  * </ul>
  *
@@ -37,6 +38,8 @@ final class DaemonProtocol {
     static final byte EXIT = 3;
     /** From the client: cancel the command. */
     static final byte CANCEL = 4;
+    /** The first frame: the daemon has taken the request and runs it (until then, the client waits its turn). */
+    static final byte RUNNING = 5;
     /** The longest request a daemon reads (arguments and folder). */
     static final int MAX_REQUEST_BYTES = 1 << 20;
 
@@ -118,6 +121,13 @@ final class DaemonProtocol {
                 }
             }
         };
+    }
+
+    /** Writes the first frame: the request is running. */
+    static void running(SocketChannel channel) throws IOException {
+        synchronized (channel) {
+            writeFully(channel, ByteBuffer.allocate(5).put(RUNNING).putInt(0).flip());
+        }
     }
 
     /** Writes the last frame, the exit code. */

@@ -169,6 +169,12 @@ public final class RenderDaemon {
             System.out.println("a connection that sent no request: " + e.getMessage());
             return true;
         }
+        try {
+            DaemonProtocol.running(client);
+        } catch (IOException gone) {
+            System.out.println("a client that left before its turn");
+            return true;
+        }
         if (request.kind() == DaemonProtocol.Kind.STOP) {
             reply(client, ExitCodes.OK);
             System.out.println("stopped by a client");

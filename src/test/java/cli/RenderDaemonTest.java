@@ -129,6 +129,25 @@ class RenderDaemonTest {
     }
 
     @Test
+    void aClientThatLeavesBeforeItsTurnRendersNothing() throws Exception {
+        String here = Path.of("").toAbsolutePath().toString();
+        Path second = folder.resolve("second.png");
+        try (SocketChannel busy = SocketChannel.open(UnixDomainSocketAddress.of(address.socket()))) {
+            request(slowRender(folder.resolve("street.png")), here).send(busy);
+            awaitProgress(busy, new StringBuilder());
+            try (SocketChannel waiting = SocketChannel.open(UnixDomainSocketAddress.of(address.socket()))) {
+                request(slowRender(second), here).send(waiting);
+            } // gone before the daemon took it
+            DaemonProtocol.writeFully(busy, ByteBuffer.wrap(new byte[] {DaemonProtocol.CANCEL}));
+            while (frame(busy).kind != DaemonProtocol.EXIT) {
+                // the first render's report
+            }
+        }
+        renderStillWorks(); // served after the second request was skipped or cancelled
+        assertFalse(Files.exists(second));
+    }
+
+    @Test
     void stopEndsTheDaemonAndRemovesItsSocket() throws Exception {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         assertEquals(ExitCodes.OK, client(out, new ByteArrayOutputStream()).run(List.of("stop")));
@@ -255,6 +274,7 @@ class RenderDaemonTest {
             channel.connect(UnixDomainSocketAddress.of(address.socket()));
             request(args, workingFolder).send(channel);
             StringBuilder err = new StringBuilder();
+            assertEquals(DaemonProtocol.RUNNING, frame(channel).kind, "the first frame says the request runs");
             if (cancel != null) {
                 awaitProgress(channel, err);
                 DaemonProtocol.writeFully(channel, ByteBuffer.wrap(new byte[] {cancel}));
