@@ -80,33 +80,13 @@ class DaemonProcessTest {
     @Test
     void sigtermToTheClientCancelsTheRenderInTheDaemon() throws Exception {
         Path image = tmp.resolve("street.png");
-        Process client = CommandLineProcess.builder(
-                        List.of("-Djava.io.tmpdir=" + tmp),
-                        "--daemon",
-                        "render",
-                        "scenes/street.json",
-                        "-o",
-                        image.toString(),
-                        "--threads",
-                        "1",
-                        "--progress",
-                        "lines")
-                .redirectErrorStream(true)
-                .start();
-        StringBuilder output = new StringBuilder();
-        var reader = client.inputReader(StandardCharsets.UTF_8);
-        for (String line = reader.readLine(); line != null; line = reader.readLine()) {
-            output.append(line).append('\n');
-            if (line.startsWith("render:")) break;
-        }
-        client.toHandle().destroy(); // SIGTERM
-        for (String line = reader.readLine(); line != null; line = reader.readLine())
-            output.append(line).append('\n');
-        assertTrue(client.waitFor(30, TimeUnit.SECONDS), "the client ended");
+        CommandLineProcess.Ended client = CommandLineProcess.sigtermDuringStreetRender(
+                List.of("-Djava.io.tmpdir=" + tmp), List.of("--daemon"), image.toString());
+        String output = client.output();
         Matcher started = STARTED.matcher(output);
         if (started.find()) daemons.add(Long.parseLong(started.group(1)));
-        assertEquals(143, client.exitValue(), output.toString());
-        assertTrue(output.toString().contains("render cancelled: no image written"), output.toString());
+        assertEquals(143, client.exitValue(), output);
+        assertTrue(output.contains("render cancelled: no image written"), output);
         assertFalse(Files.exists(image));
         Result after = run(render(tmp.resolve("after.png")));
         assertEquals(ExitCodes.OK, after.code, "the daemon serves on: " + after.output);
