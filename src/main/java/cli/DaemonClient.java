@@ -1,6 +1,5 @@
 package cli;
 
-import java.io.EOFException;
 import java.io.File;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -79,12 +78,33 @@ final class DaemonClient {
                             + (args.isEmpty() ? "nothing" : String.join(" ", args)));
             return ExitCodes.BAD_INPUT;
         }
+        var request = new DaemonProtocol.Request(
+                DaemonProtocol.Kind.RENDER, workingFolder().toString(), Terminal.interactive(), args);
+        try {
+            return send(request);
+        } catch (NotTaken ended) {
+            // The daemon ended (idle, stopped, rebuilt) as the request came, before taking it: start another.
+            return send(request);
+        }
+    }
+
+    /** Sends the request to a live daemon, or to one started for it, and relays its answer. */
+    private int send(DaemonProtocol.Request request) throws IOException {
         SocketChannel live = connect();
         try (SocketChannel channel = live != null ? live : start()) {
-            var request = new DaemonProtocol.Request(
-                    DaemonProtocol.Kind.RENDER, workingFolder().toString(), Terminal.interactive(), args);
-            request.send(channel);
+            try {
+                request.send(channel);
+            } catch (IOException e) {
+                throw new NotTaken(e);
+            }
             return relay(channel);
+        }
+    }
+
+    /** The connection ended before the daemon took the request, so it can be sent again. */
+    private static final class NotTaken extends IOException {
+        NotTaken(IOException cause) {
+            super("the render daemon ended before it took the request: " + cause.getMessage(), cause);
         }
     }
 
@@ -100,6 +120,9 @@ final class DaemonClient {
             int code = relay(channel);
             say(out, "stopped the render daemon");
             return code;
+        } catch (NotTaken ended) {
+            say(out, "no render daemon serves this program in this folder (one was ending)");
+            return ExitCodes.OK;
         }
     }
 
@@ -128,8 +151,12 @@ final class DaemonClient {
                 target.write(body.array(), 0, length);
                 target.flush();
             }
-        } catch (EOFException e) {
-            say(err, "render failed: the render daemon ended without an answer; its log: " + address.log());
+        } catch (IOException e) {
+            if (!running.get()) throw new NotTaken(e);
+            say(
+                    err,
+                    "render failed: the render daemon ended without an answer (" + e.getMessage() + "); its log: "
+                            + address.log());
             return ExitCodes.RENDER_FAILED;
         } finally {
             answered.countDown();

@@ -13,6 +13,7 @@ import java.io.StringWriter;
 import java.net.StandardProtocolFamily;
 import java.net.UnixDomainSocketAddress;
 import java.nio.ByteBuffer;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -56,6 +57,10 @@ class RenderDaemonTest {
         if (!daemon.isDone())
             client(new ByteArrayOutputStream(), new ByteArrayOutputStream()).run(List.of("stop"));
         daemon.get(30, TimeUnit.SECONDS);
+    }
+
+    @AfterEach
+    void stopThreads() {
         executor.shutdownNow();
     }
 
@@ -145,6 +150,41 @@ class RenderDaemonTest {
         }
         renderStillWorks(); // served after the second request was skipped or cancelled
         assertFalse(Files.exists(second));
+    }
+
+    @Test
+    void aDaemonThatEndsAsTheRequestComesIsReplaced() throws Exception {
+        stopDaemon(); // this test's address gets a listener that ends as the request comes
+        DaemonAddress ending = DaemonAddress.at(folder.resolve("ending.sock"));
+        try (ServerSocketChannel listener = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
+            listener.bind(UnixDomainSocketAddress.of(ending.socket()));
+            Future<?> endsAtOnce = executor.submit(() -> {
+                try (SocketChannel taken = listener.accept()) {
+                    listener.close();
+                    Files.delete(ending.socket());
+                }
+                return null;
+            });
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            DaemonClient client = new DaemonClient(ending, testLaunch(), out, err);
+            Path image = folder.resolve("replaced.png");
+            try {
+                assertEquals(ExitCodes.OK, client.run(renderArgs("scenes/aa-edges.json", image)), text(err));
+                endsAtOnce.get(10, TimeUnit.SECONDS);
+                assertTrue(text(err).contains("started a render daemon"), text(err));
+                assertTrue(Files.size(image) > 0);
+            } finally {
+                client.run(List.of("stop"));
+            }
+        }
+    }
+
+    /** The launch of a daemon process with this JVM's test class path (surefire's, where it runs the tests). */
+    private static JavaLaunch testLaunch() {
+        JavaLaunch launch = JavaLaunch.ofThisProgram();
+        return new JavaLaunch(
+                launch.java(), launch.options(), System.getProperty("surefire.test.class.path", launch.classPath()));
     }
 
     @Test
