@@ -1,6 +1,5 @@
 package benchmark;
 
-import cli.JavaLaunch;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -13,6 +12,7 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
+import launch.JavaLaunch;
 import renderer.Camera;
 import renderer.ProgressiveSettings;
 import renderer.sampling.SamplingConfig;

@@ -11,6 +11,7 @@ import java.nio.file.attribute.PosixFileAttributes;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Set;
+import launch.JavaLaunch;
 
 /**
  * Where the render daemon that can serve this program listens: one daemon per JDK, class path (and the newest

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import launch.JavaLaunch;
 
 /**
  * {@code raytracer --daemon render ...}: runs the render command in the render daemon ({@link RenderDaemon}),

@@ -23,6 +23,7 @@ import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
+import launch.JavaLaunch;
 import picocli.CommandLine;
 import primitives.Printable;
 import renderer.Camera;

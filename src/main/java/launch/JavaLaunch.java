@@ -1,4 +1,4 @@
-package cli;
+package launch;
 
 import java.io.File;
 import java.lang.module.ModuleFinder;
