@@ -169,8 +169,7 @@ public final class PovRayComparison {
     private static CommandLineTime commandLineSeconds(double target, Path out)
             throws IOException, InterruptedException {
         Run run = commandLine(renderArgs(target, out, false));
-        Matcher m = RENDER_TIME.matcher(run.output());
-        if (!m.find()) throw new IOException("no render time in the command line's output:\n" + run.output());
+        Matcher m = renderTime(run.output());
         return new CommandLineTime(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)), run.wall());
     }
 
@@ -212,9 +211,14 @@ public final class PovRayComparison {
     }
 
     private static double printedRender(String text) throws IOException {
+        return Double.parseDouble(renderTime(text).group(1));
+    }
+
+    /** The printed render line's match: group 1 the render's wall time, group 2 the part of it spent preparing. */
+    private static Matcher renderTime(String text) throws IOException {
         Matcher m = RENDER_TIME.matcher(text);
         if (!m.find()) throw new IOException("no render time in the command line's output:\n" + text);
-        return Double.parseDouble(m.group(1));
+        return m;
     }
 
     /** A command line's output (stdout and stderr) and its time from start to exit. */

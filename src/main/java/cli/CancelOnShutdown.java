@@ -2,6 +2,7 @@ package cli;
 
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import renderer.Camera;
 
 /**
@@ -32,12 +33,25 @@ final class CancelOnShutdown implements RenderHost.CancelGuard {
 
     private void cancelUntilClosed() {
         signalled = true;
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(GRACE_MILLIS);
+        cancelUntil(() -> camera, closed, TimeUnit.MILLISECONDS.toNanos(GRACE_MILLIS));
+    }
+
+    /**
+     * Cancels the render of {@code camera} (null: none yet) every 20 ms until {@code done} opens or {@code maxNanos}
+     * have passed: again and again, because a render that starts right after a {@code cancel()} begins afresh and
+     * clears it.
+     *
+     * @param camera the camera rendering, or giving null while there is none
+     * @param done opens when the command has finished and reported
+     * @param maxNanos how long to keep cancelling at most
+     */
+    static void cancelUntil(Supplier<Camera> camera, CountDownLatch done, long maxNanos) {
+        long start = System.nanoTime();
         try {
-            // Cancelled again and again: a render that starts right after a cancel() begins afresh and clears it.
             do {
-                camera.cancel();
-            } while (!closed.await(20, TimeUnit.MILLISECONDS) && System.nanoTime() < deadline);
+                Camera c = camera.get();
+                if (c != null) c.cancel();
+            } while (!done.await(20, TimeUnit.MILLISECONDS) && System.nanoTime() - start < maxNanos);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -52,8 +52,7 @@ record DaemonAddress(Path socket, Path lock, Path log) {
                     + MAX_SOCKET_PATH_BYTES + " a Unix domain socket's path may have everywhere; give the JVM a shorter"
                     + " -Djava.io.tmpdir");
         }
-        return new DaemonAddress(
-                folder.resolve(key + ".sock"), folder.resolve(key + ".lock"), folder.resolve(key + ".log"));
+        return at(socket);
     }
 
     /** The address of a daemon whose socket is {@code socket} (its lock and log beside it). */

@@ -20,8 +20,9 @@ import launch.JavaLaunch;
  * {@code raytracer --daemon render ...}: runs the render command in the render daemon ({@link RenderDaemon}),
  * starting one when none serves this program in this folder (with the Vector API module whenever the JDK has it,
  * so the client itself needs no {@code --add-modules}), and relays its output and exit code.
- * {@code raytracer --daemon stop} stops it. The client loads neither picocli nor the renderer, so its own JVM
- * starts in a few tens of milliseconds; Ctrl-C cancels the render in the daemon and waits for its report.
+ * {@code raytracer --daemon stop} stops it. The client loads neither the renderer nor Jackson (of picocli, only the
+ * few classes the verifier needs for {@link RaytracerCli}); Ctrl-C cancels the render in the daemon and waits for its
+ * report.
  */
 final class DaemonClient {
     /** The option, first on the command line, that sends the command to the daemon. */

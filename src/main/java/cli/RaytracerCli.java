@@ -55,7 +55,7 @@ public final class RaytracerCli implements Runnable {
 
     /**
      * Runs the command line and exits with its code when it is not 0. With {@code --daemon} first, the command runs
-     * in the render daemon ({@link DaemonClient}), and this JVM loads neither picocli nor the renderer.
+     * in the render daemon ({@link DaemonClient}), and this JVM loads neither the renderer nor Jackson.
      *
      * @param args the command-line arguments
      */

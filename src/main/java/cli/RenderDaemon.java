@@ -52,17 +52,16 @@ public final class RenderDaemon {
     private RenderDaemon() {}
 
     /**
-     * Serves the socket given as the first argument until idle or stopped; an optional second argument is the idle
-     * time in seconds. Started by {@link DaemonClient}, with its output in the daemon's log.
+     * Serves the socket given as the argument until idle or stopped. Started by {@link DaemonClient}, with its output
+     * in the daemon's log.
      *
-     * @param args the socket path, and optionally the idle seconds
+     * @param args the socket path
      * @throws IOException if the socket cannot be served
      */
     public static void main(String[] args) throws IOException {
         ignore("INT");
         ignore("HUP");
-        Duration idle = args.length > 1 ? Duration.ofSeconds(Long.parseLong(args[1])) : IDLE;
-        serve(DaemonAddress.at(Path.of(args[0])), idle);
+        serve(DaemonAddress.at(Path.of(args[0])), IDLE);
     }
 
     @SuppressWarnings("restriction")
@@ -270,15 +269,7 @@ public final class RenderDaemon {
             }
             if (finished.getCount() == 0) return;
             cancelRequested = true;
-            try {
-                // Cancelled again and again: a render that starts right after a cancel() begins afresh and clears it.
-                do {
-                    Camera c = camera;
-                    if (c != null) c.cancel();
-                } while (!finished.await(20, TimeUnit.MILLISECONDS));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            CancelOnShutdown.cancelUntil(() -> camera, finished, Long.MAX_VALUE); // until the command ends
         }
 
         void finish() {

@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import launch.JavaLaunch;
 
 /** The command line in a JVM of its own, for tests that need a fresh JVM or a real process (signals, class loading). */
 final class CommandLineProcess {
@@ -19,14 +20,21 @@ final class CommandLineProcess {
      * @return the builder, not started
      */
     static ProcessBuilder builder(List<String> jvmOptions, String... args) {
-        List<String> command = new ArrayList<>();
-        command.add(ProcessHandle.current().info().command().orElse("java"));
-        command.addAll(jvmOptions);
-        command.add("-cp");
-        command.add(System.getProperty("surefire.test.class.path", System.getProperty("java.class.path")));
-        command.add("cli.RaytracerCli");
-        command.addAll(List.of(args));
-        return new ProcessBuilder(command);
+        JavaLaunch tests = launch();
+        return new ProcessBuilder(
+                new JavaLaunch(tests.java(), jvmOptions, tests.classPath()).command("cli.RaytracerCli", List.of(args)));
+    }
+
+    /**
+     * The JVM running the tests, without options, on their class path (surefire's, where it runs them).
+     *
+     * @return the launch of a JVM like this one
+     */
+    static JavaLaunch launch() {
+        return new JavaLaunch(
+                ProcessHandle.current().info().command().orElse("java"),
+                List.of(),
+                System.getProperty("surefire.test.class.path", System.getProperty("java.class.path")));
     }
 
     /**

@@ -168,7 +168,7 @@ class RenderDaemonTest {
             });
             ByteArrayOutputStream out = new ByteArrayOutputStream();
             ByteArrayOutputStream err = new ByteArrayOutputStream();
-            DaemonClient client = new DaemonClient(ending, testLaunch(), out, err);
+            DaemonClient client = new DaemonClient(ending, CommandLineProcess.launch(), out, err);
             Path image = folder.resolve("replaced.png");
             try {
                 assertEquals(ExitCodes.OK, client.run(renderArgs("scenes/aa-edges.json", image)), text(err));
@@ -179,13 +179,6 @@ class RenderDaemonTest {
                 client.run(List.of("stop"));
             }
         }
-    }
-
-    /** The launch of a daemon process with this JVM's test class path (surefire's, where it runs the tests). */
-    private static JavaLaunch testLaunch() {
-        JavaLaunch launch = JavaLaunch.ofThisProgram();
-        return new JavaLaunch(
-                launch.java(), launch.options(), System.getProperty("surefire.test.class.path", launch.classPath()));
     }
 
     @Test
