@@ -29,9 +29,8 @@ import sceneio.SceneLoader;
  * image's measured error reaches the one wanted), timed as its command line prints it (a new
  * JVM per render), through {@code --daemon} (the render daemon's first render and later ones, with the client's time
  * from start to exit, beside POV-Ray's) and in a warm JVM (median of 5), and a converged reference (4,096 shadow
- * rays per pixel). Each
- * renderer is measured against its own reference, on the 8-bit images. Needs {@code povray} on the PATH;
- * {@code raytracer benchmark povray [output folder]}.
+ * rays per pixel). Each renderer is measured against its own reference, on the 8-bit images. Needs {@code povray}
+ * on the PATH; {@code raytracer benchmark povray [output folder]}.
  */
 public final class PovRayComparison {
     private static final Path SCENE = Path.of("scenes/povray/soft-shadow.json");
@@ -173,12 +172,13 @@ public final class PovRayComparison {
         return new CommandLineTime(Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2)), run.wall());
     }
 
+    /** The daemon's first render, the median of the later ones as printed, and their clients' start to exit. */
+    private record DaemonTimes(double first, double render, double wall) {}
+
     /**
      * Renders through {@code --daemon}: the daemon's first render (the daemon stopped before it, so started afresh)
      * and the medians of {@value #DAEMON_RUNS} more, as printed and as the client's time from start to exit.
      */
-    private record DaemonTimes(double first, double render, double wall) {}
-
     private static DaemonTimes daemonSeconds(double target, Path out) throws IOException, InterruptedException {
         commandLine(List.of("--daemon", "stop"));
         double first = printedRender(commandLine(renderArgs(target, out, true)).output());

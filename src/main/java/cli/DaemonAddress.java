@@ -3,8 +3,11 @@ package cli;
 import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFileAttributes;
@@ -73,15 +76,15 @@ record DaemonAddress(Path socket, Path lock, Path log) {
         if (!Files.exists(folder)) {
             try {
                 Files.createDirectory(folder, PosixFilePermissions.asFileAttribute(PRIVATE));
-            } catch (java.nio.file.FileAlreadyExistsException raced) {
+            } catch (FileAlreadyExistsException raced) {
                 // another client created it: checked below like any existing folder
-            } catch (java.nio.file.NoSuchFileException e) {
+            } catch (NoSuchFileException e) {
                 throw new BadInputException("--daemon: cannot create " + folder + ", as its folder does not exist;"
                         + " give the JVM an existing -Djava.io.tmpdir");
             }
         }
         PosixFileAttributes attributes = Files.getFileAttributeView(
-                        folder, PosixFileAttributeView.class, java.nio.file.LinkOption.NOFOLLOW_LINKS)
+                        folder, PosixFileAttributeView.class, LinkOption.NOFOLLOW_LINKS)
                 .readAttributes();
         String me = System.getProperty("user.name");
         if (!attributes.isDirectory()

@@ -136,21 +136,17 @@ final class DaemonClient {
         Runtime.getRuntime().addShutdownHook(cancel);
         try {
             while (true) {
-                ByteBuffer header = DaemonProtocol.readFully(channel, 5);
-                byte kind = header.get();
-                int length = header.getInt();
-                if (length < 0 || length > DaemonProtocol.MAX_REQUEST_BYTES) throw new IOException("bad frame");
-                ByteBuffer body = DaemonProtocol.readFully(channel, length);
-                if (kind == DaemonProtocol.EXIT) {
+                DaemonProtocol.Frame frame = DaemonProtocol.readFrame(channel);
+                if (frame.kind() == DaemonProtocol.EXIT) {
                     answered.countDown();
-                    return body.getInt();
+                    return frame.body().getInt();
                 }
-                if (kind == DaemonProtocol.RUNNING) {
+                if (frame.kind() == DaemonProtocol.RUNNING) {
                     running.set(true);
                     continue;
                 }
-                OutputStream target = kind == DaemonProtocol.OUT ? out : err;
-                target.write(body.array(), 0, length);
+                OutputStream target = frame.kind() == DaemonProtocol.OUT ? out : err;
+                target.write(frame.body().array(), 0, frame.body().limit());
                 target.flush();
             }
         } catch (IOException e) {

@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -40,8 +41,8 @@ final class DaemonProtocol {
     static final byte CANCEL = 4;
     /** The first frame: the daemon has taken the request and runs it (until then, the client waits its turn). */
     static final byte RUNNING = 5;
-    /** The longest request a daemon reads (arguments and folder). */
-    static final int MAX_REQUEST_BYTES = 1 << 20;
+    /** The longest message either side reads: a request (arguments and folder), or a frame's bytes. */
+    static final int MAX_MESSAGE_BYTES = 1 << 20;
 
     private DaemonProtocol() {}
 
@@ -70,9 +71,9 @@ final class DaemonProtocol {
             data.writeInt(args.size());
             for (String arg : args) writeString(data, arg);
             byte[] body = bytes.toByteArray();
-            if (body.length > MAX_REQUEST_BYTES) {
+            if (body.length > MAX_MESSAGE_BYTES) {
                 throw new IOException("the command's arguments take " + body.length
-                        + " bytes; the daemon reads at most " + MAX_REQUEST_BYTES);
+                        + " bytes; the daemon reads at most " + MAX_MESSAGE_BYTES);
             }
             writeFully(
                     channel,
@@ -84,7 +85,7 @@ final class DaemonProtocol {
 
         static Request receive(SocketChannel channel) throws IOException {
             int length = readFully(channel, 4).getInt();
-            if (length < 0 || length > MAX_REQUEST_BYTES) throw new IOException("not a request: length " + length);
+            if (length < 0 || length > MAX_MESSAGE_BYTES) throw new IOException("not a request: length " + length);
             DataInputStream data = new DataInputStream(
                     new ByteArrayInputStream(readFully(channel, length).array()));
             if (data.readInt() != MAGIC) throw new IOException("not a request of this daemon's protocol");
@@ -98,6 +99,23 @@ final class DaemonProtocol {
             for (int i = 0; i < count; i++) args.add(readString(data));
             return new Request(Kind.values()[kind], folder, interactive, args);
         }
+    }
+
+    /**
+     * One frame of the daemon's answer.
+     *
+     * @param kind {@link #RUNNING}, {@link #OUT}, {@link #ERR} or {@link #EXIT}
+     * @param body its bytes
+     */
+    record Frame(byte kind, ByteBuffer body) {}
+
+    /** Reads the next frame of the daemon's answer. */
+    static Frame readFrame(SocketChannel channel) throws IOException {
+        ByteBuffer header = readFully(channel, 5);
+        byte kind = header.get();
+        int length = header.getInt();
+        if (length < 0 || length > MAX_MESSAGE_BYTES) throw new IOException("not a frame: length " + length);
+        return new Frame(kind, readFully(channel, length));
     }
 
     /** Writes frames of one kind: an output stream whose every write is one frame. */
@@ -153,7 +171,7 @@ final class DaemonProtocol {
     }
 
     private static void writeString(DataOutputStream data, String s) throws IOException {
-        byte[] utf8 = s.getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        byte[] utf8 = s.getBytes(StandardCharsets.UTF_8);
         data.writeInt(utf8.length);
         data.write(utf8);
     }
@@ -161,6 +179,6 @@ final class DaemonProtocol {
     private static String readString(DataInputStream data) throws IOException {
         int n = data.readInt();
         if (n < 0 || n > data.available()) throw new IOException("not a request: a string of " + n + " bytes");
-        return new String(data.readNBytes(n), java.nio.charset.StandardCharsets.UTF_8);
+        return new String(data.readNBytes(n), StandardCharsets.UTF_8);
     }
 }

@@ -145,7 +145,7 @@ class RenderDaemonTest {
                 request(slowRender(second), here).send(waiting);
             } // gone before the daemon took it
             DaemonProtocol.writeFully(busy, ByteBuffer.wrap(new byte[] {DaemonProtocol.CANCEL}));
-            while (frame(busy).kind != DaemonProtocol.EXIT) {
+            while (DaemonProtocol.readFrame(busy).kind() != DaemonProtocol.EXIT) {
                 // the first render's report
             }
         }
@@ -308,35 +308,31 @@ class RenderDaemonTest {
             channel.connect(UnixDomainSocketAddress.of(address.socket()));
             request(args, workingFolder).send(channel);
             StringBuilder err = new StringBuilder();
-            assertEquals(DaemonProtocol.RUNNING, frame(channel).kind, "the first frame says the request runs");
+            assertEquals(
+                    DaemonProtocol.RUNNING,
+                    DaemonProtocol.readFrame(channel).kind(),
+                    "the first frame says the request runs");
             if (cancel != null) {
                 awaitProgress(channel, err);
                 DaemonProtocol.writeFully(channel, ByteBuffer.wrap(new byte[] {cancel}));
             }
             while (true) {
-                Frame frame = frame(channel);
-                if (frame.kind == DaemonProtocol.EXIT)
-                    return new Answer(ByteBuffer.wrap(frame.body).getInt(), err.toString());
-                if (frame.kind == DaemonProtocol.ERR) err.append(new String(frame.body, StandardCharsets.UTF_8));
+                DaemonProtocol.Frame frame = DaemonProtocol.readFrame(channel);
+                if (frame.kind() == DaemonProtocol.EXIT)
+                    return new Answer(frame.body().getInt(), err.toString());
+                if (frame.kind() == DaemonProtocol.ERR)
+                    err.append(StandardCharsets.UTF_8.decode(frame.body()).toString());
             }
         }
     }
 
     private static void awaitProgress(SocketChannel channel, StringBuilder err) throws IOException {
         while (!err.toString().contains("render: 10%")) {
-            Frame frame = frame(channel);
-            assertTrue(frame.kind != DaemonProtocol.EXIT, "the render ended before its first progress line: " + err);
-            if (frame.kind == DaemonProtocol.ERR) err.append(new String(frame.body, StandardCharsets.UTF_8));
+            DaemonProtocol.Frame frame = DaemonProtocol.readFrame(channel);
+            assertTrue(frame.kind() != DaemonProtocol.EXIT, "the render ended before its first progress line: " + err);
+            if (frame.kind() == DaemonProtocol.ERR)
+                err.append(StandardCharsets.UTF_8.decode(frame.body()).toString());
         }
-    }
-
-    private record Frame(byte kind, byte[] body) {}
-
-    private static Frame frame(SocketChannel channel) throws IOException {
-        ByteBuffer header = DaemonProtocol.readFully(channel, 5);
-        byte kind = header.get();
-        return new Frame(
-                kind, DaemonProtocol.readFully(channel, header.getInt()).array());
     }
 
     private static String text(ByteArrayOutputStream bytes) {
